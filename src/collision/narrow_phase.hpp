@@ -1,0 +1,21 @@
+#pragma once
+/// Narrow-phase dispatch between the player's box and a static shape.
+
+#include <variant>
+
+#include "geometry/convex_polygon.hpp"
+#include "geometry/obb2.hpp"
+#include "geometry/sat_result.hpp"
+
+namespace cardemo {
+
+/// A static collider: a parked car's box or a convex obstacle.
+using StaticShape = std::variant<Obb2, ConvexPolygon>;
+
+/// SAT between the player's box (A) and a static shape (B); normal from the player to the shape.
+[[nodiscard]] SatResult2 collidePlayer(const Obb2& player, const StaticShape& shape);
+
+/// Tight bounds of a static shape.
+[[nodiscard]] Aabb2 boundsOf(const StaticShape& shape);
+
+}  // namespace cardemo

@@ -1,0 +1,44 @@
+#include "geometry/angle.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace cardemo {
+
+Eigen::Vector2d unitFromDegrees(double degrees) {
+  // Reduce exactly in degrees (fmod is exact), then pick the quadrant so that 90, 180, 270 give
+  // exact unit vectors instead of cos(pi/2) = 6e-17.
+  double r = std::fmod(degrees, 360.0);
+  if (r < 0) r += 360.0;
+  int quadrant = 0;
+  while (r >= 90.0 && quadrant < 3) {
+    r -= 90.0;
+    ++quadrant;
+  }
+  const double rad = r * (std::numbers::pi / 180.0);
+  const double c = r == 0.0 ? 1.0 : std::cos(rad);
+  const double s = r == 0.0 ? 0.0 : std::sin(rad);
+  switch (quadrant) {
+    case 0: return {c, s};
+    case 1: return {-s, c};
+    case 2: return {-c, -s};
+    default: return {s, -c};
+  }
+}
+
+Eigen::Vector2d unitFromRadians(double radians) { return {std::cos(radians), std::sin(radians)}; }
+
+double wrapRadians(double radians) {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double r = std::remainder(radians, kTwoPi);  // exact, in [-pi, pi]
+  if (r <= -std::numbers::pi) r += kTwoPi;
+  return r;
+}
+
+double degreesOf(const Eigen::Vector2d& direction) {
+  double d = std::atan2(direction.y(), direction.x()) * (180.0 / std::numbers::pi);
+  if (d <= -180.0) d += 360.0;
+  return d;
+}
+
+}  // namespace cardemo

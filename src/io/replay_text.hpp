@@ -1,0 +1,65 @@
+#pragma once
+/// Replay files (`cardemo-replay 1`): parse, expectations, and writing (for --record).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/input_error.hpp"
+#include "sim/input_frame.hpp"
+
+namespace cardemo {
+
+/// COUNT frames holding the same keys.
+struct InputRun {
+  std::int64_t count = 1;  ///< >= 1.
+  InputFrame keys;         ///< Keys held.
+};
+
+/// An expected hit (`expect hit FRAME ID`).
+struct ExpectedHit {
+  std::int64_t frame = 0;  ///< Frame of first contact.
+  std::string id;          ///< Collider id.
+};
+
+/// Expectation lines of a replay; each is optional.
+struct ReplayExpectations {
+  std::optional<int> health;                      ///< `expect health H`
+  std::optional<std::int64_t> hit_count;          ///< `expect hits N`
+  std::optional<std::vector<ExpectedHit>> hits;   ///< `expect hit F ID` lines, in order
+  std::optional<std::string> hash;                ///< `expect hash HEX16`
+  std::optional<std::int64_t> frames;             ///< `expect frames N`
+};
+
+/// A parsed replay.
+struct Replay {
+  std::string scene;           ///< Scene path as written (relative to the replay's folder); may be empty.
+  std::string scene_resolved;  ///< Scene path resolved against the replay file's folder.
+  int hz = 120;                ///< Fixed steps per second, 1..10000.
+  std::vector<InputRun> runs;  ///< Inputs in order.
+  ReplayExpectations expect;   ///< Optional expectations.
+
+  /// Total frames of input.
+  [[nodiscard]] std::int64_t totalFrames() const;
+};
+
+/// Limits that keep hostile replays from hanging the program.
+inline constexpr std::int64_t kMaxReplayFrames = 100'000'000;
+/// Longest accepted line, bytes.
+inline constexpr std::size_t kMaxLineBytes = 4096;
+
+/// Parses replay text; `filename` resolves the scene path and labels errors.
+[[nodiscard]] Parsed<Replay> parseReplay(std::string_view text, const std::string& filename);
+
+/// Reads and parses a replay file.
+[[nodiscard]] Parsed<Replay> loadReplay(const std::string& path);
+
+/// Formats keys as the replay writes them: `.` or letters in the order U D L R.
+[[nodiscard]] std::string keysText(const InputFrame& keys);
+
+/// Serialises a replay (header, scene, hz, runs, then expectations), parseable by parseReplay.
+[[nodiscard]] std::string formatReplay(const Replay& replay);
+
+}  // namespace cardemo
