@@ -1,0 +1,34 @@
+/// cardemo: entry point; wires the subcommands together.
+
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"cardemo: a top-down car game with an exact, fast collision core", "cardemo"};
+  app.set_version_flag("--version", std::string("cardemo ") + CARDEMO_VERSION);
+  app.require_subcommand(1);
+  int exit_code = 0;
+  cardemo::app::addReplayCommand(app, exit_code);
+  cardemo::app::addCollideCommand(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Usage errors are bad input: one line on stderr, exit status 2 (CONTRACT.md).
+    std::fprintf(stderr, "cardemo: %s (see cardemo --help)\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cardemo: internal error: %s\n", e.what());
+    return 3;
+  }
+  return exit_code;
+}

@@ -1,0 +1,89 @@
+#include "io/replay_runner.hpp"
+
+#include <cstdio>
+
+#include "io/scene_json.hpp"
+
+namespace cardemo {
+
+Parsed<Scene> loadReplayScene(const Replay& replay, const std::string& replay_path,
+                              const std::string& scene_override) {
+  if (!scene_override.empty()) return loadScene(scene_override);
+  if (replay.scene_resolved.empty()) {
+    return InputError{replay_path, 1, "the replay names no scene: add a `scene PATH` line or pass --scene"};
+  }
+  return loadScene(replay.scene_resolved);
+}
+
+WorldSettings settingsForReplay(const Replay& replay) {
+  WorldSettings settings;
+  settings.hz = replay.hz;
+  return settings;
+}
+
+void runReplayInputs(World& world, const Replay& replay,
+                     const std::function<void(const World&)>& after_step) {
+  for (const InputRun& run : replay.runs) {
+    for (std::int64_t i = 0; i < run.count; ++i) {
+      world.step(run.keys);
+      if (after_step) after_step(world);
+    }
+  }
+}
+
+namespace {
+
+std::string hitsText(const std::vector<ExpectedHit>& hits) {
+  if (hits.empty()) return "none";
+  std::string out;
+  for (const ExpectedHit& h : hits) {
+    if (!out.empty()) out += ", ";
+    out += std::to_string(h.frame) + " " + h.id;
+  }
+  return out;
+}
+
+}  // namespace
+
+ReplayExpectations expectationsOf(const World& world) {
+  ReplayExpectations e;
+  e.frames = world.frame();
+  e.health = world.health();
+  e.hit_count = static_cast<std::int64_t>(world.hits().size());
+  std::vector<ExpectedHit> hits;
+  for (const HitEvent& h : world.hits()) hits.push_back({h.frame, h.id});
+  e.hits = std::move(hits);
+  e.hash = hashHex(world.stateHash());
+  return e;
+}
+
+std::vector<std::string> checkExpectations(const Replay& replay, const World& world) {
+  std::vector<std::string> diffs;
+  const ReplayExpectations actual = expectationsOf(world);
+  const ReplayExpectations& want = replay.expect;
+  if (want.frames && *want.frames != *actual.frames) {
+    diffs.push_back("frames: expected " + std::to_string(*want.frames) + ", got " +
+                    std::to_string(*actual.frames));
+  }
+  if (want.health && *want.health != *actual.health) {
+    diffs.push_back("health: expected " + std::to_string(*want.health) + ", got " +
+                    std::to_string(*actual.health));
+  }
+  if (want.hit_count && *want.hit_count != *actual.hit_count) {
+    diffs.push_back("hits: expected " + std::to_string(*want.hit_count) + ", got " +
+                    std::to_string(*actual.hit_count));
+  }
+  if (want.hits) {
+    const auto& w = *want.hits;
+    const auto& a = *actual.hits;
+    bool same = w.size() == a.size();
+    for (std::size_t i = 0; same && i < w.size(); ++i) same = w[i].frame == a[i].frame && w[i].id == a[i].id;
+    if (!same) diffs.push_back("hit list: expected [" + hitsText(w) + "], got [" + hitsText(a) + "]");
+  }
+  if (want.hash && *want.hash != *actual.hash) {
+    diffs.push_back("hash: expected " + *want.hash + ", got " + *actual.hash);
+  }
+  return diffs;
+}
+
+}  // namespace cardemo

@@ -1,0 +1,32 @@
+#pragma once
+/// Running a replay's inputs through a World, and checking its expectations.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/input_error.hpp"
+#include "io/replay_text.hpp"
+#include "sim/world.hpp"
+
+namespace cardemo {
+
+/// Loads the scene a replay names (`scene_override` wins when non-empty). A replay without a scene
+/// and without an override is an error on the replay's line 1.
+[[nodiscard]] Parsed<Scene> loadReplayScene(const Replay& replay, const std::string& replay_path,
+                                            const std::string& scene_override);
+
+/// World settings for a replay (its `hz`, everything else default).
+[[nodiscard]] WorldSettings settingsForReplay(const Replay& replay);
+
+/// Steps `world` through every input frame of `replay`, calling `after_step` (when set) after each.
+void runReplayInputs(World& world, const Replay& replay,
+                     const std::function<void(const World&)>& after_step = {});
+
+/// Compares the replay's expectation lines with the world's outcome; one sentence per difference.
+[[nodiscard]] std::vector<std::string> checkExpectations(const Replay& replay, const World& world);
+
+/// Expectation lines that describe the world's outcome exactly (for `replay --bless`).
+[[nodiscard]] ReplayExpectations expectationsOf(const World& world);
+
+}  // namespace cardemo

@@ -1,0 +1,46 @@
+#include "io/summary_json.hpp"
+
+#include "geometry/angle.hpp"
+
+namespace cardemo {
+namespace {
+
+// Integral rates print as integers, as the contract shows them.
+nlohmann::json hzJson(double hz) {
+  if (hz == static_cast<double>(static_cast<std::int64_t>(hz))) return static_cast<std::int64_t>(hz);
+  return hz;
+}
+
+}  // namespace
+
+nlohmann::json summaryJson(const World& world) {
+  nlohmann::json hits = nlohmann::json::array();
+  for (const HitEvent& h : world.hits()) {
+    hits.push_back({{"frame", h.frame}, {"id", h.id}, {"speed", h.speed}, {"damage", h.damage}});
+  }
+  const CarState& car = world.car();
+  const WorldStats& s = world.stats();
+  return {
+      {"scene", world.scene().name},
+      {"hz", hzJson(world.settings().hz)},
+      {"frames", world.frame()},
+      {"health", world.health()},
+      {"game_over", world.gameOver()},
+      {"hits", hits},
+      {"final",
+       {{"x", car.position.x()},
+        {"y", car.position.y()},
+        {"heading_deg", degreesOf(car.direction)},
+        {"speed", car.speed}}},
+      {"hash", hashHex(world.stateHash())},
+      {"stats",
+       {{"broadphase_queries", s.broadphase_queries},
+        {"broadphase_candidates", s.broadphase_candidates},
+        {"narrowphase_tests", s.narrowphase_tests},
+        {"contacts", s.contacts},
+        {"skipped_queries", s.skipped_queries},
+        {"substeps", s.substeps}}},
+  };
+}
+
+}  // namespace cardemo
