@@ -139,7 +139,7 @@ TEST(Cli, Collide2dRowsInOrder) {
       "0,0,0,4,2,5,0,0,4,2\n"      // gap of 1 along x
       "0,0,0,4,2,4,0,0,4,2\n"      // touching
       "\n"
-      "0,0,0,4,2,3,0,90,4,2\n";    // B rotated 90: overlap 0.5
+      "0,0,0,4,2,2.5,0,90,4,2\n";  // B rotated 90: overlap 0.5
   const Run r = cardemo("collide -", csv);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "0,1,1,0\n1,0,1,0\n1,-0.5,1,0\n");
