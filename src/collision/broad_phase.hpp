@@ -33,6 +33,7 @@ class UniformGrid {
   std::int64_t nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> cell_start_;  // nx*ny+1 offsets into cell_items_
   std::vector<std::uint32_t> cell_items_;
+  std::vector<std::uint32_t> large_items_;  // items spanning too many cells: tested by every query
   mutable std::vector<std::uint32_t> stamp_;  // last query number that reported item i
   mutable std::uint32_t query_number_ = 0;
 };

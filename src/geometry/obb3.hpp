@@ -24,11 +24,12 @@ struct Obb3 {
   [[nodiscard]] Aabb3 aabb() const;
 };
 
-/// 15-axis SAT (3 faces of A, 3 of B, 9 edge-edge cross products), computed in A's frame.
-/// Near-parallel edge pairs: the relative rotation is formed with error-free products so that the
-/// cross-product axes keep full relative precision down to 1e-15 rad; an exactly vanishing cross
-/// product is skipped, which is exact because parallel edge pairs add no face to the Minkowski
-/// difference that the face axes do not already cover. Never reports a false "separated".
+/// 15-axis SAT (3 faces of A, 3 of B, 9 edge-edge cross products). Face axes work in A's frame.
+/// Near-parallel edges: each edge-edge axis a_i x b_j is formed from the stored columns with
+/// error-free (fma-based) 2x2 determinants, so it keeps full relative precision down to 1e-15 rad
+/// and is exactly zero only when the edges are exactly parallel; such an axis is skipped, which is
+/// exact because a parallel edge pair adds no face to the Minkowski difference that the other axes
+/// do not already cover. Never reports a false "separated".
 [[nodiscard]] SatResult3 collideObb3(const Obb3& a, const Obb3& b);
 
 /// Boolean form of collideObb3.

@@ -23,6 +23,7 @@ struct CarParams {
   double steer_rate = 2.5;          ///< Steering wheel rate limit, radians of wheel angle per second.
   double lock_speed = 20.0;         ///< Speed (m/s) at which the lock has narrowed to half.
   double restitution = 0.2;         ///< Share of the normal speed that bounces back after an impact.
+  double bounce_threshold = 1.0;    ///< Impacts slower than this (m/s) do not bounce at all.
 };
 
 /// Kinematic state of the player's car.

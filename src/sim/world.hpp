@@ -42,7 +42,7 @@ struct HitEvent {
 /// Work done so far (the summary's `stats`).
 struct WorldStats {
   std::int64_t broadphase_queries = 0;     ///< Grid queries actually run.
-  std::int64_t broadphase_candidates = 0;  ///< Candidates those queries returned, summed.
+  std::int64_t broadphase_candidates = 0;  ///< Candidates sent to the narrow phase, summed.
   std::int64_t narrowphase_tests = 0;      ///< SAT tests run.
   std::int64_t contacts = 0;               ///< Frames x colliders in contact, summed.
   std::int64_t substeps = 0;               ///< Extra collision sub-steps taken for fast motion.
@@ -113,6 +113,19 @@ class World {
   Aabb2 last_query_box_;
   bool have_query_ = false;
   WorldStats stats_;
+
+  // Per-step scratch (reserved once, so step() does not allocate when warm).
+  std::vector<ActiveContact> previous_contacts_;  // last frame's contacts_, to clear touching_
+  std::vector<double> contact_speed_;  // closing speed of contacts_[k] when first detected
+  std::vector<ActiveContact> detected_;  // contacts at the current pose (last detect())
+  Obb2 detected_box_;  // player box that detected_ belongs to
+  bool have_detected_ = false;
+
+  void detect();
+  void mergeDetected();
+  void moveWithSubsteps(const CarState& start, const CarState& next);
+  void resolveContacts();
+  void recordHits();
 };
 
 /// Formats a hash as 16 lowercase hex digits.

@@ -1,0 +1,62 @@
+#include "sim/contact_response.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cardemo {
+
+double closingSpeed(const CarState& car, const Eigen::Vector2d& normal) {
+  const double vx = car.speed * car.direction.x();
+  const double vy = car.speed * car.direction.y();
+  const double vn = vx * normal.x() + vy * normal.y();
+  return vn > 0.0 ? vn : 0.0;
+}
+
+void removeClosingVelocity(CarState& car, const Eigen::Vector2d& normal, const CarParams& params) {
+  double vx = car.speed * car.direction.x();
+  double vy = car.speed * car.direction.y();
+  const double vn = vx * normal.x() + vy * normal.y();
+  if (!(vn > 0.0)) return;
+  // Slow impacts do not bounce (Box2D's b2_velocityThreshold idea): otherwise a car held against a
+  // wall by its throttle would bounce off and come back in ever smaller hops, each a new hit.
+  const double restitution = vn > params.bounce_threshold ? params.restitution : 0.0;
+  const double k = (1.0 + restitution) * vn;
+  vx -= k * normal.x();
+  vy -= k * normal.y();
+  car.speed = vx * car.direction.x() + vy * car.direction.y();
+}
+
+double restingPenetration(const Eigen::Vector2d& position) {
+  // Push-out stops just short of separation rather than at it: a car pushed to exactly sep = 0
+  // can land at +1 ulp after rounding, read as "not touching", and the next frame's contact would
+  // then count as a new hit. 0.1 um is about 50 ulps of a coordinate at 1e7 m (the contract's
+  // range), so rounding cannot flip it, and it is the same value everywhere in that range, so a
+  // translated scene behaves the same; beyond it the margin grows with the coordinate's ulp.
+  const double scale = std::abs(position.x()) + std::abs(position.y());
+  return std::max(1e-7, 2e-15 * scale);
+}
+
+bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls) {
+  const Aabb2 box = carBox(car, params).aabb();
+  double dx = 0.0, dy = 0.0;
+  if (box.min.x() < walls.min.x()) {
+    dx = walls.min.x() - box.min.x();
+    removeClosingVelocity(car, Eigen::Vector2d(-1.0, 0.0), params);
+  } else if (box.max.x() > walls.max.x()) {
+    dx = walls.max.x() - box.max.x();
+    removeClosingVelocity(car, Eigen::Vector2d(1.0, 0.0), params);
+  }
+  if (box.min.y() < walls.min.y()) {
+    dy = walls.min.y() - box.min.y();
+    removeClosingVelocity(car, Eigen::Vector2d(0.0, -1.0), params);
+  } else if (box.max.y() > walls.max.y()) {
+    dy = walls.max.y() - box.max.y();
+    removeClosingVelocity(car, Eigen::Vector2d(0.0, 1.0), params);
+  }
+  if (dx == 0.0 && dy == 0.0) return false;
+  car.position.x() += dx;
+  car.position.y() += dy;
+  return true;
+}
+
+}  // namespace cardemo

@@ -1,0 +1,26 @@
+#pragma once
+/// Velocity and position response of the player's car against static surfaces.
+
+#include <Eigen/Core>
+
+#include "geometry/aabb.hpp"
+#include "sim/car.hpp"
+
+namespace cardemo {
+
+/// Closing speed of the car along `normal` (unit, from the car towards the surface), m/s, >= 0.
+[[nodiscard]] double closingSpeed(const CarState& car, const Eigen::Vector2d& normal);
+
+/// Removes the velocity into a surface with unit `normal` (from the car towards it), bouncing
+/// back `params.restitution` of it when faster than `params.bounce_threshold`; the car keeps only
+/// the part along its heading (no lateral velocity).
+void removeClosingVelocity(CarState& car, const Eigen::Vector2d& normal, const CarParams& params);
+
+/// Penetration (metres, > 0) that push-out leaves in place so that resting contact stays contact.
+[[nodiscard]] double restingPenetration(const Eigen::Vector2d& position);
+
+/// Shifts the car back inside `walls` when its bounds leave them, removing the velocity into each
+/// wall it met; returns true when it moved.
+bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls);
+
+}  // namespace cardemo

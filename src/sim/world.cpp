@@ -1,0 +1,220 @@
+#include "sim/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "geometry/angle.hpp"
+#include "sim/contact_response.hpp"
+
+namespace cardemo {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<StaticShape> collidersOf(const Scene& scene) {
+  std::vector<StaticShape> out;
+  out.reserve(scene.parked.size() + scene.obstacles.size());
+  for (const ParkedCar& p : scene.parked) out.emplace_back(p.box);
+  for (const Obstacle& o : scene.obstacles) out.emplace_back(o.polygon);
+  return out;
+}
+
+std::vector<Aabb2> boundsOfAll(const std::vector<StaticShape>& shapes) {
+  std::vector<Aabb2> out;
+  out.reserve(shapes.size());
+  for (const StaticShape& s : shapes) out.push_back(boundsOf(s));
+  return out;
+}
+
+CarParams paramsFor(const WorldSettings& settings, const PlayerStart& player) {
+  CarParams p = settings.car;
+  p.length = player.length;
+  p.width = player.width;
+  return p;
+}
+
+bool sameBox(const Obb2& a, const Obb2& b) {
+  return a.center == b.center && a.axis == b.axis && a.half == b.half;
+}
+
+}  // namespace
+
+World::World(Scene scene, const WorldSettings& settings)
+    : scene_(std::move(scene)),
+      settings_(settings),
+      params_(paramsFor(settings, scene_.player)),
+      colliders_(collidersOf(scene_)),
+      grid_(boundsOfAll(colliders_)),
+      health_(scene_.player.health),
+      touching_(colliders_.size(), 0) {
+  car_.position = scene_.player.position;
+  car_.heading = wrapRadians(scene_.player.heading_deg * (kPi / 180.0));
+  car_.direction = unitFromDegrees(scene_.player.heading_deg);
+  car_.speed = scene_.player.speed;
+
+  // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
+  const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
+  candidates_.reserve(expected);
+  contacts_.reserve(expected);
+  previous_contacts_.reserve(expected);
+  contact_speed_.reserve(expected);
+  detected_.reserve(expected);
+  hits_.reserve(64);
+
+  // Frame 0: contacts of the loaded scene are hits at frame 0; the car is not moved.
+  detect();
+  mergeDetected();
+  recordHits();
+}
+
+const std::string& World::colliderId(std::uint32_t i) const {
+  const std::size_t parked = scene_.parked.size();
+  return i < parked ? scene_.parked[i].id : scene_.obstacles[i - parked].id;
+}
+
+Obb2 World::carBox() const {
+  return cardemo::carBox(car_, params_);
+}
+
+void World::detect() {
+  const Obb2 box = carBox();
+  const Aabb2 query =
+      settings_.broad_phase_box == BroadPhaseBox::kTight ? box.aabb() : box.rotationProofAabb();
+  if (have_query_ && query == last_query_box_) {
+    ++stats_.skipped_queries;
+    // Same pose as the last narrow phase: its answer still holds.
+    if (have_detected_ && sameBox(box, detected_box_)) return;
+    // Reused candidates still feed the narrow phase, so they are counted as candidates again.
+    stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
+  } else {
+    grid_.query(query, candidates_);
+    last_query_box_ = query;
+    have_query_ = true;
+    ++stats_.broadphase_queries;
+    stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
+  }
+  detected_.clear();
+  for (const std::uint32_t id : candidates_) {
+    ++stats_.narrowphase_tests;
+    const SatResult2 r = collidePlayer(box, colliders_[id]);
+    if (r.separation <= 0.0) detected_.push_back({id, r.normal, r.separation});
+  }
+  detected_box_ = box;
+  have_detected_ = true;
+}
+
+void World::mergeDetected() {
+  const std::size_t first_new = contacts_.size();
+  for (const ActiveContact& c : detected_) {
+    const bool known =
+        std::any_of(contacts_.begin(), contacts_.end(),
+                    [&c](const ActiveContact& k) { return k.collider == c.collider; });
+    if (known) continue;
+    contacts_.push_back(c);
+    contact_speed_.push_back(closingSpeed(car_, c.normal));
+  }
+  // Velocity response once per collider per step, however many push passes it takes: repeating
+  // it would compound (the car keeps only its heading component), and the number of passes can
+  // depend on last-bit rounding, which must not change the outcome.
+  for (std::size_t k = first_new; k < contacts_.size(); ++k) {
+    removeClosingVelocity(car_, contacts_[k].normal, params_);
+  }
+}
+
+void World::moveWithSubsteps(const CarState& start, const CarState& next) {
+  const double dt = 1.0 / settings_.hz;
+  const double limit = 0.5 * std::min(params_.length, params_.width);
+  const double motion = std::abs(next.speed) * dt;
+  std::int64_t n = 1;
+  // Continuous safety: no sub-step moves the car by more than half its smaller extent, so it
+  // cannot pass through anything (the 2^20 cap only guards against absurd inputs).
+  if (motion > limit) n = static_cast<std::int64_t>(std::min(std::ceil(motion / limit), 1048576.0));
+  const double dh = wrapRadians(next.heading - start.heading);
+  for (std::int64_t i = 1; i <= n; ++i) {
+    if (i == n) {
+      car_ = next;
+    } else {
+      const double f = static_cast<double>(i) / static_cast<double>(n);
+      car_ = next;
+      car_.position.x() = start.position.x() + (next.position.x() - start.position.x()) * f;
+      car_.position.y() = start.position.y() + (next.position.y() - start.position.y()) * f;
+      if (dh != 0.0) {
+        car_.heading = wrapRadians(start.heading + dh * f);
+        car_.direction = unitFromRadians(car_.heading);
+      } else {
+        car_.heading = start.heading;
+        car_.direction = start.direction;
+      }
+    }
+    detect();
+    if (!detected_.empty()) {
+      stats_.substeps += i - 1;
+      return;
+    }
+  }
+  stats_.substeps += n - 1;
+}
+
+void World::resolveContacts() {
+  for (int pass = 0; pass < settings_.max_push_iterations && !detected_.empty(); ++pass) {
+    const ActiveContact* deepest = &detected_.front();
+    for (const ActiveContact& c : detected_) {
+      if (c.separation < deepest->separation) deepest = &c;
+    }
+    const double rest = restingPenetration(car_.position);
+    // Within twice the resting margin counts as resting: no re-push for a last-bit difference.
+    if (deepest->separation >= -2.0 * rest) break;
+    const double push = -deepest->separation - rest;
+    const Eigen::Vector2d n = deepest->normal;
+    car_.position.x() -= n.x() * push;
+    car_.position.y() -= n.y() * push;
+    detect();
+    mergeDetected();
+  }
+  if (scene_.bounds && keepInsideWalls(car_, params_, *scene_.bounds)) {
+    detect();
+    mergeDetected();
+  }
+}
+
+void World::recordHits() {
+  // Insertion sort by collider (a handful of contacts): hits within a frame come in index order
+  // and the state hash sees the touching set in a fixed order.
+  for (std::size_t i = 1; i < contacts_.size(); ++i) {
+    for (std::size_t j = i; j > 0 && contacts_[j].collider < contacts_[j - 1].collider; --j) {
+      std::swap(contacts_[j], contacts_[j - 1]);
+      std::swap(contact_speed_[j], contact_speed_[j - 1]);
+    }
+  }
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const std::uint32_t id = contacts_[k].collider;
+    if (touching_[id] != 0) continue;
+    const double speed = contact_speed_[k];
+    const double raw = std::ceil(settings_.damage_per_mps * speed);
+    const double clamped = std::clamp(raw, static_cast<double>(settings_.damage_min),
+                                      static_cast<double>(settings_.damage_max));
+    const int damage = static_cast<int>(clamped);
+    health_ = std::max(0, health_ - damage);
+    hits_.push_back({frame_, id, colliderId(id), speed, damage});
+  }
+  for (const ActiveContact& c : previous_contacts_) touching_[c.collider] = 0;
+  for (const ActiveContact& c : contacts_) touching_[c.collider] = 1;
+  stats_.contacts += static_cast<std::int64_t>(contacts_.size());
+}
+
+void World::step(const InputFrame& input) {
+  const InputFrame in = gameOver() ? InputFrame{} : input;
+  const CarState start = car_;
+  const CarState next = integrateCar(start, in, params_, 1.0 / settings_.hz);
+  ++frame_;
+  previous_contacts_.swap(contacts_);
+  contacts_.clear();
+  contact_speed_.clear();
+  moveWithSubsteps(start, next);
+  mergeDetected();
+  resolveContacts();
+  recordHits();
+}
+
+}  // namespace cardemo

@@ -1,0 +1,52 @@
+#include "collision/narrow_phase.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "geometry/sat_obb2.hpp"
+
+namespace cardemo {
+namespace {
+
+TEST(NarrowPhase, BoxDispatchMatchesCollideObb2) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> pos(-6.0, 6.0), deg(-180.0, 180.0), size(0.5, 5.0);
+  for (int i = 0; i < 2000; ++i) {
+    const Obb2 a = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const Obb2 b = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const SatResult2 want = collideObb2(a, b);
+    const SatResult2 got = collidePlayer(a, StaticShape{b});
+    ASSERT_EQ(got.hit, want.hit);
+    ASSERT_EQ(got.separation, want.separation);
+    ASSERT_EQ(got.normal, want.normal);
+  }
+}
+
+TEST(NarrowPhase, PolygonDispatchAgreesWithTheSameBoxAsAnObb) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> pos(-6.0, 6.0), deg(-180.0, 180.0), size(0.5, 5.0);
+  for (int i = 0; i < 2000; ++i) {
+    const Obb2 a = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const Obb2 b = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const SatResult2 box = collidePlayer(a, StaticShape{b});
+    const SatResult2 poly = collidePlayer(a, StaticShape{ConvexPolygon::fromObb(b)});
+    ASSERT_NEAR(poly.separation, box.separation, 1e-9) << "case " << i;
+    if (std::abs(box.separation) > 1e-6) {
+      ASSERT_EQ(poly.hit, box.hit) << "case " << i;
+    }
+  }
+}
+
+TEST(NarrowPhase, BoundsOfBothShapes) {
+  const Obb2 b = Obb2::fromDegrees({1.0, 2.0}, 90.0, 4.0, 2.0);
+  const Aabb2 box = boundsOf(StaticShape{b});
+  EXPECT_EQ(box.min, Eigen::Vector2d(0.0, 0.0));
+  EXPECT_EQ(box.max, Eigen::Vector2d(2.0, 4.0));
+  const Aabb2 poly = boundsOf(StaticShape{ConvexPolygon::fromObb(b)});
+  EXPECT_NEAR((poly.min - box.min).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((poly.max - box.max).norm(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace cardemo

@@ -1,0 +1,267 @@
+/// 3D OBB SAT against the exact GMP oracle: seeded random classes, both argument orders.
+
+#include "geometry/obb3.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "compare/exact/exact_sat.hpp"
+#include "random_cases3.hpp"
+
+namespace cardemo {
+namespace {
+
+using test3::Pair3;
+
+constexpr double kHitTolerance = 1e-6;  // CONTRACT: hit must be right when |sep| > 1e-6 m
+constexpr double kSepTolerance = 2e-6;  // CONTRACT: sep within 2e-6 m
+constexpr int kCasesPerClass = 100000;
+
+std::string describe(const Obb3& a, const Obb3& b) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "A c=" << a.center.transpose() << " h=" << a.half.transpose() << " R=[" << a.rotation.row(0)
+    << "; " << a.rotation.row(1) << "; " << a.rotation.row(2) << "]\n"
+    << "B c=" << b.center.transpose() << " h=" << b.half.transpose() << " R=[" << b.rotation.row(0)
+    << "; " << b.rotation.row(1) << "; " << b.rotation.row(2) << "]";
+  return s.str();
+}
+
+// Tallies over one class; reports the first few failures in full.
+struct Tally {
+  int cases = 0;
+  int failures = 0;
+  int hits = 0;
+  int crossWins = 0;  // cases whose reported axis is an edge-edge axis
+  double worstSepError = 0.0;
+  double worstAsymmetry = 0.0;
+
+  void fail(const std::string& what, const Obb3& a, const Obb3& b) {
+    if (++failures <= 5) ADD_FAILURE() << what << "\n" << describe(a, b);
+  }
+};
+
+// Checks one pair in both orders against the oracle (computed once: the oracle is symmetric, which
+// exact_sat3_test checks). `strictHit`: the oracle's hit must be matched even inside 1e-6 m.
+void checkPair(const Pair3& p, Tally& t, bool strictHit = false,
+               const exact::ExactResult* known = nullptr) {
+  const exact::ExactResult ex = known != nullptr ? *known : exact::collideObb3(p.a, p.b);
+  const SatResult3 ab = collideObb3(p.a, p.b);
+  const SatResult3 ba = collideObb3(p.b, p.a);
+  ++t.cases;
+  t.hits += ex.hit ? 1 : 0;
+  t.crossWins += ab.axis_index >= 6 ? 1 : 0;
+  const bool checkHit = strictHit || std::abs(ex.separation) > kHitTolerance;
+  for (const auto& [r, x, y] : {std::tuple{ab, &p.a, &p.b}, std::tuple{ba, &p.b, &p.a}}) {
+    const double err = std::abs(r.separation - ex.separation);
+    t.worstSepError = std::max(t.worstSepError, err);
+    std::ostringstream s;
+    s.precision(17);
+    s << "exact hit=" << ex.hit << " sep=" << ex.separation << "; got hit=" << r.hit
+      << " sep=" << r.separation << " axis=" << r.axis_index;
+    if (!(err <= kSepTolerance)) t.fail("separation off: " + s.str(), *x, *y);
+    if (checkHit && r.hit != ex.hit) t.fail("hit wrong: " + s.str(), *x, *y);
+    if (overlapObb3(*x, *y) != r.hit) t.fail("overlapObb3 disagrees: " + s.str(), *x, *y);
+    if (!(std::abs(r.normal.norm() - 1.0) <= 1e-12)) t.fail("normal not unit: " + s.str(), *x, *y);
+    if (r.hit != (r.separation <= 0.0)) t.fail("hit inconsistent with sep: " + s.str(), *x, *y);
+    // The normal points from the first box towards the second.
+    const Eigen::Vector3d d = y->center - x->center;
+    if (!(r.normal.dot(d) >= -1e-9 * (1.0 + d.norm()))) t.fail("normal points backwards", *x, *y);
+  }
+  const double asym = std::abs(ab.separation - ba.separation);
+  t.worstAsymmetry = std::max(t.worstAsymmetry, asym);
+  if (!(asym <= 1e-9)) t.fail("separation not symmetric", p.a, p.b);
+}
+
+// Runs `count` (scaled) cases of one generator and asserts no failures; prints the statistics.
+void runClass(const char* name, std::uint64_t seed,
+              const std::function<Pair3(std::mt19937_64&)>& gen, int count = kCasesPerClass,
+              bool strictHit = false) {
+  std::mt19937_64 rng(seed);
+  Tally t;
+  const auto start = std::chrono::steady_clock::now();
+  const int n = test3::scaledCount(count);
+  for (int k = 0; k < n; ++k) checkPair(gen(rng), t, strictHit);
+  const double secs =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "[ %s ] %d pairs x 2 orders, %d exact hits, %d edge-axis wins, worst |sep err| %.3g m, "
+      "worst asymmetry %.3g m, %.2f s\n",
+      name, t.cases, t.hits, t.crossWins, t.worstSepError, t.worstAsymmetry, secs);
+  EXPECT_EQ(t.failures, 0) << name;
+  EXPECT_EQ(t.cases, n);
+}
+
+TEST(Obb3Random, GapsBothSidesOfTouching) {
+  runClass("gaps", 0x0b3a0001, test3::gapPair);
+}
+
+TEST(Obb3Random, FarFromOrigin) {
+  runClass("far", 0x0b3a0002, test3::farPair);
+}
+
+TEST(Obb3Random, ExtremeSizesAndAspects) {
+  runClass("sizes", 0x0b3a0003, test3::sizePair);
+}
+
+TEST(Obb3Random, NearParallelEdges) {
+  runClass("near-parallel", 0x0b3a0004,
+           [](std::mt19937_64& rng) { return test3::nearParallelPair(rng); });
+}
+
+TEST(Obb3Random, ExactlyCoincident) {
+  runClass("coincident", 0x0b3a0005, test3::coincidentPair);
+}
+
+TEST(Obb3Random, ExactlyParallel) {
+  runClass("parallel", 0x0b3a0006, test3::parallelPair);
+}
+
+TEST(Obb3Random, Containment) {
+  runClass("containment", 0x0b3a0007, test3::containmentPair);
+}
+
+TEST(Obb3Random, ExactTouchingAxisAligned) {
+  // Exact touching must be a hit with separation exactly zero, not merely within 1e-6 m.
+  runClass("touching", 0x0b3a0008, test3::touchingPair, kCasesPerClass, true);
+  std::mt19937_64 rng(0x0b3a0009);
+  for (int k = 0; k < 1000; ++k) {
+    const Pair3 p = test3::touchingPair(rng);
+    EXPECT_EQ(collideObb3(p.a, p.b).separation, 0.0);
+    EXPECT_TRUE(exact::collideObb3(p.a, p.b).hit);
+  }
+}
+
+// Near-parallel edges at each named angle: overlapping or touching boxes are never reported as
+// separated (strict: the oracle's verdict must be matched even below 1e-6 m).
+TEST(Obb3NearParallel, NeverFalselySeparated) {
+  const double angles[] = {1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
+  std::uint64_t seed = 0x0b3a0100;
+  for (const double angle : angles) {
+    std::mt19937_64 rng(seed++);
+    Tally t;
+    int overlapping = 0;
+    const int n = test3::scaledCount(20000);
+    for (int k = 0; k < n; ++k) {
+      Pair3 p = test3::nearParallelPair(rng, angle, angle);
+      // Overlap by 1e-9..1e-3 m along the chosen axis; the oracle decides what is truly a hit.
+      const Eigen::Vector3d d = p.b.center - p.a.center;
+      if (d.norm() > 0.0) {
+        const Eigen::Vector3d u = d.normalized();
+        test3::placeAtGap(p.a, p.b, u, -test3::logUniform(rng, 1e-9, 1e-3));
+      }
+      const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
+      if (!ex.hit) continue;
+      ++overlapping;
+      EXPECT_TRUE(collideObb3(p.a, p.b).hit) << "angle " << angle << "\n" << describe(p.a, p.b);
+      EXPECT_TRUE(collideObb3(p.b, p.a).hit) << "angle " << angle << "\n" << describe(p.a, p.b);
+      EXPECT_TRUE(overlapObb3(p.a, p.b)) << "angle " << angle;
+      EXPECT_TRUE(overlapObb3(p.b, p.a)) << "angle " << angle;
+      checkPair(p, t, true, &ex);
+    }
+    std::printf("[ near-parallel %g rad ] %d overlapping pairs, worst |sep err| %.3g m\n", angle,
+                overlapping, t.worstSepError);
+    EXPECT_GT(overlapping, n / 50) << "too few overlapping cases at angle " << angle;
+    EXPECT_EQ(t.failures, 0) << "angle " << angle;
+  }
+}
+
+// Two long beams, the second turned a quarter turn about z and then 1e-15..1e-3 rad about a tilted
+// axis, crossed at their edges: the true separating axis is an edge-edge cross product.
+TEST(Obb3NearParallel, CrossedBeamsSeparatedByAnEdgeAxis) {
+  const double angles[] = {1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
+  for (const double angle : angles) {
+    const Eigen::Quaterniond tilt(Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()));
+    const Obb3 a =
+        Obb3::fromQuaternion({1e7, -3e6, 2e5}, Eigen::Quaterniond::Identity(), {100.0, 0.5, 0.5});
+    Obb3 b = Obb3::fromQuaternion({0, 0, 0}, tilt, {100.0, 0.5, 0.5});
+    // Diagonal offset in A's yz plane puts B beyond A's long edge, off every face normal.
+    const Eigen::Vector3d n = a.rotation.col(0).cross(b.rotation.col(0));
+    ASSERT_GT(n.norm(), 0.0);
+    for (const double gap : {-1e-3, -1e-7, 1e-7, 1e-3}) {
+      const Eigen::Vector3d u = n.normalized();
+      test3::placeAtGap(a, b, u, gap);
+      const exact::ExactResult ex = exact::collideObb3(a, b);
+      const SatResult3 r = collideObb3(a, b);
+      EXPECT_NEAR(r.separation, ex.separation, kSepTolerance) << angle << " " << gap;
+      EXPECT_EQ(r.hit, ex.hit) << angle << " " << gap;
+      EXPECT_EQ(overlapObb3(b, a), ex.hit) << angle << " " << gap;
+    }
+  }
+}
+
+TEST(Obb3Quaternion, NormalisesAndIsOrthonormal) {
+  std::mt19937_64 rng(0x0b3a0200);
+  double worst = 0.0;
+  for (int k = 0; k < 10000; ++k) {
+    const Eigen::Quaterniond q = test3::randomRotation(rng);
+    const Eigen::Vector3d c = test3::randomCenter(rng), s = test3::randomSize(rng);
+    const Obb3 one = Obb3::fromQuaternion(c, q, s);
+    const Obb3 two = Obb3::fromQuaternion(c, Eigen::Quaterniond(2.0 * q.coeffs()), s);
+    const Obb3 tiny = Obb3::fromQuaternion(c, Eigen::Quaterniond(1e-200 * q.coeffs()), s);
+    ASSERT_EQ(one.rotation, two.rotation);
+    ASSERT_TRUE(one.rotation.isApprox(tiny.rotation, 1e-15));
+    ASSERT_EQ(one.half, 0.5 * s);
+    ASSERT_EQ(one.center, c);
+    worst = std::max(worst, (one.rotation.transpose() * one.rotation - Eigen::Matrix3d::Identity())
+                                .cwiseAbs()
+                                .maxCoeff());
+    ASSERT_NEAR(one.rotation.determinant(), 1.0, 1e-14);
+    // Same rotation as Eigen's, up to rounding.
+    ASSERT_TRUE(one.rotation.isApprox(q.normalized().toRotationMatrix(), 1e-14));
+  }
+  EXPECT_LE(worst, 4e-15);  // a few ulps
+}
+
+TEST(Obb3Aabb, ContainsEveryCorner) {
+  std::mt19937_64 rng(0x0b3a0300);
+  for (int k = 0; k < 10000; ++k) {
+    const Obb3 box = Obb3::fromQuaternion(test3::randomCenter(rng), test3::randomRotation(rng),
+                                          test3::randomSize(rng));
+    const Aabb3 bounds = box.aabb();
+    for (int c = 0; c < 8; ++c) {
+      const Eigen::Vector3d p{(c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0};
+      const Eigen::Vector3d corner = box.center + box.rotation * p.cwiseProduct(box.half);
+      // Loose: the corner itself is rounded; the bounds must be tight to a few ulps of 1e7.
+      ASSERT_TRUE((bounds.min.array() <= corner.array() + 1e-8).all());
+      ASSERT_TRUE((corner.array() <= bounds.max.array() + 1e-8).all());
+    }
+    ASSERT_LE((bounds.max - bounds.min - 2.0 * box.rotation.cwiseAbs() * box.half).norm(), 1e-8);
+  }
+}
+
+TEST(Obb3Sat, AxisIndexAndNormalOnSimpleCases) {
+  const Obb3 a = Obb3::fromQuaternion({0, 0, 0}, Eigen::Quaterniond::Identity(), {2, 2, 2});
+  Obb3 b = a;
+  b.center = {0, -3.5, 0};
+  SatResult3 r = collideObb3(a, b);
+  EXPECT_FALSE(r.hit);
+  EXPECT_DOUBLE_EQ(r.separation, 1.5);
+  EXPECT_EQ(r.axis_index, 1);
+  EXPECT_EQ(r.normal, Eigen::Vector3d(0, -1, 0));
+  // A turned 45 degrees about x (top edge along x), B 45 degrees about y (bottom edge along y): the
+  // skew edges are closest along a_0 x b_1 = z, gap 3 - 2 sqrt 2 (exact_sat3_test checks the
+  // oracle).
+  const double c = std::cos(std::numbers::pi / 8), s = std::sin(std::numbers::pi / 8);
+  const Obb3 ta = Obb3::fromQuaternion({0, 0, 0}, Eigen::Quaterniond(c, s, 0, 0), {2, 2, 2});
+  const Obb3 tb = Obb3::fromQuaternion({0, 0, 3}, Eigen::Quaterniond(c, 0, s, 0), {2, 2, 2});
+  r = collideObb3(ta, tb);
+  EXPECT_FALSE(r.hit);
+  EXPECT_NEAR(r.separation, 3.0 - 2.0 * std::sqrt(2.0), 1e-14);
+  EXPECT_EQ(r.axis_index, 6 + 3 * 0 + 1);
+  EXPECT_NEAR((r.normal - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-15);
+  r = collideObb3(tb, ta);
+  EXPECT_EQ(r.axis_index, 6 + 3 * 1 + 0);
+  EXPECT_NEAR((r.normal + Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace cardemo
