@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Run {
+struct CliResult {
   int status = -1;
   std::string out;
   std::string err;
@@ -25,7 +25,7 @@ std::string slurp(const std::filesystem::path& p) {
 }
 
 // Runs `cardemo ARGS` through the shell, capturing stdout, stderr and the exit status.
-Run cardemo(const std::string& args, const std::string& stdin_text = "") {
+CliResult cardemo(const std::string& args, const std::string& stdin_text = "") {
   std::filesystem::create_directories(kTemp);
   const auto in = kTemp / "stdin", out = kTemp / "stdout", err = kTemp / "stderr";
   std::ofstream(in, std::ios::binary) << stdin_text;
@@ -52,21 +52,21 @@ TEST(Cli, HelpAndVersionSucceed) {
   EXPECT_EQ(cardemo("--help").status, 0);
   EXPECT_EQ(cardemo("replay --help").status, 0);
   EXPECT_EQ(cardemo("collide --help").status, 0);
-  const Run v = cardemo("--version");
+  const CliResult v = cardemo("--version");
   EXPECT_EQ(v.status, 0);
   EXPECT_NE(v.out.find("cardemo "), std::string::npos);
 }
 
 TEST(Cli, UsageErrorsExitTwoWithOneLine) {
   for (const char* args : {"", "frobnicate", "replay", "collide x.csv --dim 4", "replay a b c"}) {
-    const Run r = cardemo(args);
+    const CliResult r = cardemo(args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(countLines(r.err), 1) << args << ": " << r.err;
   }
 }
 
 TEST(Cli, MissingReplayNamesTheFile) {
-  const Run r = cardemo("replay /nonexistent/x.replay");
+  const CliResult r = cardemo("replay /nonexistent/x.replay");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("/nonexistent/x.replay:", 0), 0u) << r.err;
   EXPECT_EQ(countLines(r.err), 1);
@@ -75,7 +75,7 @@ TEST(Cli, MissingReplayNamesTheFile) {
 TEST(Cli, BadReplayLineIsReported) {
   const auto p = writeTemp("bad.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") +
                                              "\n10 U\n5 X\n");
-  const Run r = cardemo("replay " + p.string());
+  const CliResult r = cardemo("replay " + p.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind(p.string() + ":4:", 0), 0u) << r.err;
 }
@@ -85,7 +85,7 @@ TEST(Cli, BadSceneLineIsReported) {
                                            "  \"player\": {\"x\": 0, \"y\": 0, \"heading_deg\": 0,\n"
                                            "    \"length\": -4.5, \"width\": 1.8}\n}\n");
   const auto replay = writeTemp("ok.replay", "cardemo-replay 1\nscene bad.json\n10 U\n");
-  const Run r = cardemo("replay " + replay.string());
+  const CliResult r = cardemo("replay " + replay.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind(scene.string() + ":5:", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("length"), std::string::npos) << r.err;
@@ -93,7 +93,7 @@ TEST(Cli, BadSceneLineIsReported) {
 
 TEST(Cli, ReplayWithoutSceneIsAnError) {
   const auto p = writeTemp("noscene.replay", "cardemo-replay 1\n10 U\n");
-  const Run r = cardemo("replay " + p.string());
+  const CliResult r = cardemo("replay " + p.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind(p.string() + ":1:", 0), 0u) << r.err;
   // --scene supplies it.
@@ -103,14 +103,14 @@ TEST(Cli, ReplayWithoutSceneIsAnError) {
 TEST(Cli, FailedExpectationExitsOneAndSaysWhat) {
   const auto p = writeTemp("expect.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") +
                                                 "\n10 .\nexpect health 99\nexpect hits 3\n");
-  const Run r = cardemo("replay " + p.string());
+  const CliResult r = cardemo("replay " + p.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("health: expected 99, got 100"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("hits: expected 3, got 0"), std::string::npos) << r.out;
 }
 
 TEST(Cli, JsonSummaryHasTheContractFields) {
-  const Run r = cardemo("replay " + asset("replays/head-on.replay") + " --json -");
+  const CliResult r = cardemo("replay " + asset("replays/head-on.replay") + " --json -");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* key : {"\"scene\"", "\"hz\"", "\"frames\"", "\"health\"", "\"hits\"", "\"final\"",
                           "\"heading_deg\"", "\"hash\"", "\"stats\"", "\"broadphase_queries\"",
@@ -125,7 +125,7 @@ TEST(Cli, TraceHasOneRowPerFrame) {
   std::filesystem::remove(trace);
   const auto replay = writeTemp("trace.replay", "cardemo-replay 1\nscene " +
                                                     asset("scenes/parking-lot.json") + "\n30 U\n20 UL\n");
-  const Run r = cardemo("replay " + replay.string() + " --trace " + trace.string());
+  const CliResult r = cardemo("replay " + replay.string() + " --trace " + trace.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string csv = slurp(trace);
   EXPECT_EQ(csv.rfind("frame,x,y,heading_deg,speed,steer_deg,health,contacts\n", 0), 0u);
@@ -140,19 +140,19 @@ TEST(Cli, Collide2dRowsInOrder) {
       "0,0,0,4,2,4,0,0,4,2\n"      // touching
       "\n"
       "0,0,0,4,2,2.5,0,90,4,2\n";  // B rotated 90: overlap 0.5
-  const Run r = cardemo("collide -", csv);
+  const CliResult r = cardemo("collide -", csv);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "0,1,1,0\n1,0,1,0\n1,-0.5,1,0\n");
 }
 
 TEST(Cli, Collide3dAndBadRows) {
-  const Run ok = cardemo("collide - --dim 3", "0,0,0,1,0,0,0,2,2,2,3,0,0,1,0,0,0,2,2,2\n");
+  const CliResult ok = cardemo("collide - --dim 3", "0,0,0,1,0,0,0,2,2,2,3,0,0,1,0,0,0,2,2,2\n");
   ASSERT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(ok.out.rfind("0,1,1,0,0,", 0), 0u) << ok.out;
-  const Run zero = cardemo("collide - --dim 3", "0,0,0,0,0,0,0,2,2,2,3,0,0,1,0,0,0,2,2,2\n");
+  const CliResult zero = cardemo("collide - --dim 3", "0,0,0,0,0,0,0,2,2,2,3,0,0,1,0,0,0,2,2,2\n");
   EXPECT_EQ(zero.status, 2);
   EXPECT_EQ(zero.err.rfind("-:1:", 0), 0u) << zero.err;
-  const Run short_row = cardemo("collide -", "1,2,3\n");
+  const CliResult short_row = cardemo("collide -", "1,2,3\n");
   EXPECT_EQ(short_row.status, 2);
   EXPECT_EQ(short_row.err.rfind("-:1:", 0), 0u) << short_row.err;
 }

@@ -1,0 +1,314 @@
+#include "io/scene_json.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <optional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "io/json_with_lines.hpp"
+
+namespace cardemo {
+namespace {
+
+using json_lines::Node;
+using json_lines::printable;
+using Kind = Node::Kind;
+
+constexpr double kMaxCoordinate = 1e9;
+constexpr double kMaxCarSize = 1e4;
+constexpr double kMaxSpeed = 1000.0;
+constexpr double kMaxHealth = 1e6;
+constexpr std::string_view kFormat = "cardemo-scene/1";
+
+enum class Rule { kCoordinate, kSize, kSpeed };
+
+// Walks the line-annotated tree, keeps the first error, and fills a Scene.
+class SceneReader {
+ public:
+  explicit SceneReader(const std::string& file) : file_(file) {}
+
+  std::optional<InputError> error;
+
+  bool readRoot(const Node& root, Scene& scene) {
+    if (root.kind != Kind::kObject) {
+      return fail(root.line, std::string("a scene must be a JSON object, found ") +
+                                 json_lines::kindName(root.kind));
+    }
+    if (!onlyKeys(root, {"format", "name", "bounds", "player", "parked", "obstacles"}, "")) {
+      return false;
+    }
+    const Node* format = required(root, "format", "");
+    if (format == nullptr || !isKind(*format, Kind::kString, "format")) return false;
+    if (format->text != kFormat) {
+      return fail(format->line, "format: expected \"" + std::string(kFormat) + "\", found \"" +
+                                    printable(format->text) + "\"");
+    }
+    if (const Node* name = root.find("name")) {
+      if (!isKind(*name, Kind::kString, "name")) return false;
+      scene.name = name->text;
+    }
+    if (const Node* bounds = root.find("bounds")) {
+      Aabb2 box;
+      if (!readBounds(*bounds, box)) return false;
+      scene.bounds = box;
+    }
+    const Node* player = required(root, "player", "");
+    if (player == nullptr || !readPlayer(*player, scene.player)) return false;
+    const Node* parked = required(root, "parked", "");
+    if (parked == nullptr || !readParked(*parked, scene.parked)) return false;
+    if (const Node* obstacles = root.find("obstacles")) {
+      if (!readObstacles(*obstacles, scene.obstacles)) return false;
+    }
+    return true;
+  }
+
+ private:
+  bool fail(int line, std::string message) {
+    if (!error) error = InputError{file_, line, std::move(message)};
+    return false;
+  }
+
+  static std::string join(const std::string& parent, std::string_view key) {
+    return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+  }
+
+  bool isKind(const Node& n, Kind kind, const std::string& path) {
+    if (n.kind == kind) return true;
+    return fail(n.line, path + ": expected " + json_lines::kindName(kind) + ", found " +
+                            json_lines::kindName(n.kind));
+  }
+
+  bool onlyKeys(const Node& obj, std::initializer_list<std::string_view> allowed,
+                const std::string& path) {
+    for (const json_lines::Member& m : obj.members) {
+      if (std::find(allowed.begin(), allowed.end(), m.key) == allowed.end()) {
+        return fail(m.line, "unknown key \"" + printable(m.key) + "\" in " +
+                                (path.empty() ? std::string("scene") : path));
+      }
+    }
+    return true;
+  }
+
+  const Node* required(const Node& obj, std::string_view key, const std::string& path) {
+    const Node* n = obj.find(key);
+    if (n == nullptr) {
+      fail(obj.line,
+           (path.empty() ? std::string("scene") : path) + ": missing \"" + std::string(key) + "\"");
+    }
+    return n;
+  }
+
+  bool number(const Node& n, const std::string& path, Rule rule, double& out) {
+    if (!isKind(n, Kind::kNumber, path)) return false;
+    const double v = n.number;
+    switch (rule) {
+      case Rule::kCoordinate:
+        if (!std::isfinite(v) || std::abs(v) > kMaxCoordinate) {
+          return fail(n.line, path + ": must be finite with |value| <= 1e9");
+        }
+        break;
+      case Rule::kSize:
+        if (!std::isfinite(v) || !(v > 0.0)) return fail(n.line, path + ": must be finite and > 0");
+        if (v > kMaxCarSize) return fail(n.line, path + ": must be at most 10000 m");
+        break;
+      case Rule::kSpeed:
+        if (!std::isfinite(v) || std::abs(v) > kMaxSpeed) {
+          return fail(n.line, path + ": must be finite with |speed| <= 1000 m/s");
+        }
+        break;
+    }
+    out = v;
+    return true;
+  }
+
+  bool field(const Node& obj, std::string_view key, const std::string& path, Rule rule,
+             double& out) {
+    const Node* n = required(obj, key, path);
+    return n != nullptr && number(*n, join(path, key), rule, out);
+  }
+
+  bool point(const Node& n, const std::string& path, Eigen::Vector2d& out) {
+    if (!isKind(n, Kind::kArray, path)) return false;
+    if (n.items.size() != 2) {
+      return fail(n.line,
+                  path + ": expected [x, y], found " + std::to_string(n.items.size()) + " values");
+    }
+    return number(n.items[0], path + "[0]", Rule::kCoordinate, out.x()) &&
+           number(n.items[1], path + "[1]", Rule::kCoordinate, out.y());
+  }
+
+  bool readBounds(const Node& n, Aabb2& box) {
+    if (!isKind(n, Kind::kObject, "bounds") || !onlyKeys(n, {"min", "max"}, "bounds")) return false;
+    const Node* min = required(n, "min", "bounds");
+    if (min == nullptr || !point(*min, "bounds.min", box.min)) return false;
+    const Node* max = required(n, "max", "bounds");
+    if (max == nullptr || !point(*max, "bounds.max", box.max)) return false;
+    if (!(box.min.x() < box.max.x() && box.min.y() < box.max.y())) {
+      return fail(n.line, "bounds: min must be less than max on both axes");
+    }
+    return true;
+  }
+
+  bool readPose(const Node& n, const std::string& path, Eigen::Vector2d& center, double& heading,
+                double& length, double& width) {
+    return field(n, "x", path, Rule::kCoordinate, center.x()) &&
+           field(n, "y", path, Rule::kCoordinate, center.y()) &&
+           field(n, "heading_deg", path, Rule::kCoordinate, heading) &&
+           field(n, "length", path, Rule::kSize, length) &&
+           field(n, "width", path, Rule::kSize, width);
+  }
+
+  bool readPlayer(const Node& n, PlayerStart& p) {
+    const std::string path = "player";
+    if (!isKind(n, Kind::kObject, path) ||
+        !onlyKeys(n, {"x", "y", "heading_deg", "length", "width", "health", "speed"}, path) ||
+        !readPose(n, path, p.position, p.heading_deg, p.length, p.width)) {
+      return false;
+    }
+    if (const Node* h = n.find("health")) {
+      if (!isKind(*h, Kind::kNumber, "player.health")) return false;
+      if (std::floor(h->number) != h->number) {
+        return fail(h->line, "player.health: must be an integer");
+      }
+      if (!(h->number > 0)) return fail(h->line, "player.health: must be > 0");
+      if (h->number > kMaxHealth) return fail(h->line, "player.health: must be at most 1000000");
+      p.health = static_cast<int>(h->number);
+    }
+    if (const Node* s = n.find("speed")) {
+      if (!number(*s, "player.speed", Rule::kSpeed, p.speed)) return false;
+    }
+    return true;
+  }
+
+  // Ids end up in line-based files (replay expectations), so they must survive trimming.
+  bool readId(const Node& obj, const std::string& path, std::string& out) {
+    const Node* n = required(obj, "id", path);
+    const std::string id_path = path + ".id";
+    if (n == nullptr || !isKind(*n, Kind::kString, id_path)) return false;
+    const std::string& id = n->text;
+    if (id.empty()) return fail(n->line, id_path + ": must not be empty");
+    const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; };
+    if (std::any_of(id.begin(), id.end(), control)) {
+      return fail(n->line, id_path + ": must not contain control characters");
+    }
+    if (id.front() == ' ' || id.back() == ' ') {
+      return fail(n->line, id_path + ": must not start or end with a space");
+    }
+    const auto [it, inserted] = ids_.emplace(id, path);
+    if (!inserted) {
+      return fail(n->line,
+                  id_path + ": duplicate id \"" + printable(id) + "\" (also " + it->second + ")");
+    }
+    out = id;
+    return true;
+  }
+
+  bool readParked(const Node& n, std::vector<ParkedCar>& cars) {
+    if (!isKind(n, Kind::kArray, "parked")) return false;
+    cars.reserve(n.items.size());
+    for (std::size_t i = 0; i < n.items.size(); ++i) {
+      const Node& car = n.items[i];
+      const std::string path = "parked[" + std::to_string(i) + "]";
+      ParkedCar out;
+      Eigen::Vector2d center;
+      double length = 0.0;
+      double width = 0.0;
+      if (!isKind(car, Kind::kObject, path) ||
+          !onlyKeys(car, {"id", "x", "y", "heading_deg", "length", "width"}, path) ||
+          !readId(car, path, out.id) ||
+          !readPose(car, path, center, out.heading_deg, length, width)) {
+        return false;
+      }
+      out.box = Obb2::fromDegrees(center, out.heading_deg, length, width);
+      cars.push_back(std::move(out));
+    }
+    return true;
+  }
+
+  bool readObstacles(const Node& n, std::vector<Obstacle>& obstacles) {
+    if (!isKind(n, Kind::kArray, "obstacles")) return false;
+    obstacles.reserve(n.items.size());
+    for (std::size_t i = 0; i < n.items.size(); ++i) {
+      const Node& ob = n.items[i];
+      const std::string path = "obstacles[" + std::to_string(i) + "]";
+      Obstacle out;
+      if (!isKind(ob, Kind::kObject, path) || !onlyKeys(ob, {"id", "points"}, path) ||
+          !readId(ob, path, out.id)) {
+        return false;
+      }
+      const std::string points_path = path + ".points";
+      const Node* points = required(ob, "points", path);
+      if (points == nullptr || !isKind(*points, Kind::kArray, points_path)) return false;
+      const std::size_t count = points->items.size();
+      if (count < 3 || count > static_cast<std::size_t>(ConvexPolygon::kMaxVertices)) {
+        return fail(points->line, points_path + ": expected 3 to " +
+                                      std::to_string(ConvexPolygon::kMaxVertices) +
+                                      " points, found " + std::to_string(count));
+      }
+      std::vector<Eigen::Vector2d> pts(count);
+      for (std::size_t k = 0; k < count; ++k) {
+        if (!point(points->items[k], points_path + "[" + std::to_string(k) + "]", pts[k])) {
+          return false;
+        }
+      }
+      std::string why;
+      std::optional<ConvexPolygon> polygon = ConvexPolygon::fromPoints(pts, &why);
+      if (!polygon) {
+        return fail(points->line,
+                    points_path + ": " + (why.empty() ? std::string("not a convex polygon") : why));
+      }
+      out.polygon = *polygon;
+      obstacles.push_back(std::move(out));
+    }
+    return true;
+  }
+
+  const std::string& file_;
+  std::unordered_map<std::string, std::string> ids_;  // id -> field path of its first use
+};
+
+// `name` is optional: a scene without one is named after its file (stem), which is what a user
+// sees in the file browser anyway; standard input gets "scene".
+std::string defaultName(const std::string& filename) {
+  const std::string stem = std::filesystem::path(filename).stem().string();
+  return stem.empty() || stem == "-" ? std::string("scene") : stem;
+}
+
+}  // namespace
+
+Parsed<Scene> parseScene(std::string_view text, const std::string& filename) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    return InputError{filename, 1, "empty scene file"};
+  }
+  if (text.size() > kMaxSceneBytes) {
+    return InputError{filename, 1,
+                      "scene file larger than " + std::to_string(kMaxSceneBytes) + " bytes"};
+  }
+  try {
+    auto parsed = json_lines::parse(text);
+    if (const auto* err = std::get_if<json_lines::SyntaxError>(&parsed)) {
+      return InputError{filename, err->line, err->message};
+    }
+    Scene scene;
+    scene.name = defaultName(filename);
+    SceneReader reader(filename);
+    if (!reader.readRoot(std::get<Node>(parsed), scene)) {
+      return reader.error.value_or(InputError{filename, 1, "invalid scene"});
+    }
+    return scene;
+  } catch (const std::exception& e) {
+    return InputError{filename, 1, std::string("cannot read scene: ") + e.what()};
+  }
+}
+
+Parsed<Scene> loadScene(const std::string& path) {
+  Parsed<std::string> text = readInputFile(path, kMaxSceneBytes);
+  if (!text.ok()) return text.error();
+  return parseScene(text.value(), path);
+}
+
+}  // namespace cardemo

@@ -1,0 +1,182 @@
+#pragma once
+/// Seeded random 2D boxes and convex polygons for the property tests (std::mt19937_64, fixed
+/// seeds).
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.hpp"
+#include "geometry/obb2.hpp"
+#include "geometry/sat_result.hpp"
+
+namespace cardemo::testing {
+
+/// Test case count scaled by CARDEMO_TEST_SCALE (default 1.0: the full count).
+inline int scaledCount(int full) {
+  const char* s = std::getenv("CARDEMO_TEST_SCALE");
+  const double scale = s != nullptr ? std::atof(s) : 1.0;
+  return std::max(1, static_cast<int>(full * (scale > 0.0 ? scale : 1.0)));
+}
+
+/// Random source with the distributions the cases need.
+class Random {
+ public:
+  /// Seeded generator; every test uses its own fixed seed.
+  explicit Random(std::uint64_t seed) : rng_(seed) {}
+  /// Uniform in [lo, hi).
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
+  /// Log-uniform in [lo, hi).
+  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
+  /// Uniform integer in [lo, hi].
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  /// +1 or -1.
+  double sign() { return integer(0, 1) == 0 ? -1.0 : 1.0; }
+  /// Uniform unit vector.
+  Eigen::Vector2d direction() {
+    const double t = uniform(-std::numbers::pi, std::numbers::pi);
+    return {std::cos(t), std::sin(t)};
+  }
+  /// Point at a log-uniform distance (1 m .. max_radius) from the origin.
+  Eigen::Vector2d farPoint(double max_radius) { return direction() * logUniform(1.0, max_radius); }
+  /// Box with a random heading and sides log-uniform in [lo, hi].
+  Obb2 box(const Eigen::Vector2d& center, double lo, double hi) {
+    return {center, direction(), {0.5 * logUniform(lo, hi), 0.5 * logUniform(lo, hi)}};
+  }
+  /// Box with sides in [1 cm, 100 m] and aspect ratio up to 1e4.
+  Obb2 extremeBox(const Eigen::Vector2d& center) {
+    const double length = logUniform(0.01, 100.0);
+    const double aspect = logUniform(1.0, std::min(1e4, length / 0.01));
+    Eigen::Vector2d half{0.5 * length, 0.5 * length / aspect};
+    if (integer(0, 1) == 1) std::swap(half.x(), half.y());
+    return {center, direction(), half};
+  }
+  /// Convex polygon of 3..16 vertices on an ellipse (sorted random angles), rotated, around
+  /// `center`.
+  ConvexPolygon polygon(const Eigen::Vector2d& center, double lo, double hi) {
+    for (;;) {
+      const int n = integer(3, ConvexPolygon::kMaxVertices);
+      std::vector<double> angles(static_cast<std::size_t>(n));
+      for (double& t : angles) t = uniform(0.0, 2.0 * std::numbers::pi);
+      std::sort(angles.begin(), angles.end());
+      const double rx = 0.5 * logUniform(lo, hi), ry = 0.5 * logUniform(lo, hi);
+      const Eigen::Vector2d u = direction();
+      std::vector<Eigen::Vector2d> points;
+      for (double t : angles) {
+        const Eigen::Vector2d e{rx * std::cos(t), ry * std::sin(t)};
+        points.push_back(
+            center + Eigen::Vector2d(u.x() * e.x() - u.y() * e.y(), u.y() * e.x() + u.x() * e.y()));
+      }
+      if (integer(0, 1) == 1) std::reverse(points.begin(), points.end());
+      if (auto p = ConvexPolygon::fromPoints(points)) return *p;
+    }
+  }
+  /// Underlying engine.
+  std::mt19937_64& engine() { return rng_; }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+/// Half-width of a box's projection on a unit direction.
+inline double supportRadius(const Obb2& b, const Eigen::Vector2d& d) {
+  return b.half.x() * std::abs(b.axis.dot(d)) + b.half.y() * std::abs(b.perp().dot(d));
+}
+
+/// Largest projection of a polygon's vertices on a direction, relative to a point.
+inline double supportOffset(const ConvexPolygon& p, const Eigen::Vector2d& d,
+                            const Eigen::Vector2d& from) {
+  double best = -INFINITY;
+  for (int i = 0; i < p.count; ++i) best = std::max(best, (p.vertex(i) - from).dot(d));
+  return best;
+}
+
+/// The polygon translated by `t`.
+inline ConvexPolygon translated(ConvexPolygon p, const Eigen::Vector2d& t) {
+  for (int i = 0; i < p.count; ++i) p.vertices[static_cast<std::size_t>(i)] += t;
+  return p;
+}
+
+/// Signed gap (min of B minus max of A) of two point sets along an axis, relative to `ref`.
+template <class PA, class PB>
+double signedGap(const PA& a, const PB& b, const Eigen::Vector2d& axis,
+                 const Eigen::Vector2d& ref) {
+  double amax = -INFINITY, bmin = INFINITY;
+  for (const Eigen::Vector2d& p : a) amax = std::max(amax, (p - ref).dot(axis));
+  for (const Eigen::Vector2d& p : b) bmin = std::min(bmin, (p - ref).dot(axis));
+  return bmin - amax;
+}
+
+/// Polygon vertices as a vector (for signedGap).
+inline std::vector<Eigen::Vector2d> pointsOf(const ConvexPolygon& p) {
+  return {p.vertices.begin(), p.vertices.begin() + p.count};
+}
+
+}  // namespace cardemo::testing
+
+namespace cardemo::testing {
+
+/// Contract accuracy of the pair queries (CONTRACT.md, "Pair queries").
+inline constexpr double kHitTolerance = 1e-6;
+/// Contract bound on |sep - exact sep|, metres.
+inline constexpr double kSepTolerance = 2e-6;
+
+/// Collects failures of a property over many cases and keeps the first few messages.
+class Failures {
+ public:
+  /// Records a failure when `ok` is false.
+  void check(bool ok, int index, const std::string& what) {
+    if (ok) return;
+    if (count_ < 5) messages_ << "case " << index << ": " << what << "\n";
+    ++count_;
+  }
+  /// Number of failed checks.
+  [[nodiscard]] int count() const { return count_; }
+  /// The first failure messages.
+  [[nodiscard]] std::string report() const { return messages_.str(); }
+
+ private:
+  int count_ = 0;
+  std::ostringstream messages_;
+};
+
+/// Statistics of one batch of pair comparisons.
+struct PairStats {
+  int cases = 0;           ///< Pairs checked.
+  int exact_hits = 0;      ///< Pairs the oracle calls touching or overlapping.
+  int borderline = 0;      ///< Pairs with |exact sep| <= kHitTolerance.
+  double max_error = 0.0;  ///< Largest |sep - exact sep| seen, metres.
+};
+
+/// Checks one fast SAT result in one argument order against the exact separation and hit.
+/// `points_a`/`points_b` are the shapes' vertices, used to verify that the normal realises sep.
+template <class PA, class PB>
+void checkAgainstExact(const SatResult2& r, bool exact_hit, double exact_sep, const PA& points_a,
+                       const PB& points_b, const Eigen::Vector2d& ref, int index, Failures& f,
+                       PairStats& stats) {
+  std::ostringstream ctx;
+  ctx.precision(17);
+  ctx << " (sep " << r.separation << ", exact " << exact_sep << ", hit " << r.hit << ", exact hit "
+      << exact_hit << ")";
+  if (std::abs(exact_sep) > kHitTolerance)
+    f.check(r.hit == exact_hit, index, "hit differs" + ctx.str());
+  const double err = std::abs(r.separation - exact_sep);
+  stats.max_error = std::max(stats.max_error, err);
+  f.check(err <= kSepTolerance, index, "sep error too large" + ctx.str());
+  f.check(r.hit == (r.separation <= 0.0), index, "hit disagrees with own sep" + ctx.str());
+  f.check(std::abs(r.normal.norm() - 1.0) <= 1e-12, index, "normal not unit" + ctx.str());
+  // The normal must be an axis whose A-to-B gap is the reported separation (sign included).
+  const double g = signedGap(points_a, points_b, r.normal, ref);
+  f.check(std::abs(g - r.separation) <= kSepTolerance, index,
+          "gap along normal is " + std::to_string(g) + ctx.str());
+}
+
+}  // namespace cardemo::testing

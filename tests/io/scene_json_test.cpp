@@ -1,0 +1,430 @@
+#include "io/scene_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io_test_util.hpp"
+
+namespace cardemo {
+namespace {
+
+using testing::failsAt;
+using testing::replaced;
+
+// Line numbers below refer to this text.
+constexpr std::string_view kScene = R"({
+  "format": "cardemo-scene/1",
+  "name": "lot",
+  "bounds": {"min": [-60, -40], "max": [60, 40]},
+  "player": {
+    "x": 1,
+    "y": 2,
+    "heading_deg": 0,
+    "length": 4.5,
+    "width": 1.8,
+    "health": 80,
+    "speed": 3
+  },
+  "parked": [
+    {"id": "A1", "x": 10, "y": 5, "heading_deg": 90, "length": 4.5, "width": 1.8},
+    {"id": "A2", "x": -10, "y": 5, "heading_deg": 30, "length": 4, "width": 2},
+    {"id": "A3", "x": 0, "y": -20, "heading_deg": 180, "length": 5, "width": 2.2}
+  ],
+  "obstacles": [
+    {"id": "kerb", "points": [[0, 0], [0, 1], [3, 1], [3, 0]]}
+  ]
+}
+)";
+
+Parsed<Scene> parse(std::string_view text) {
+  return parseScene(text, "lot.json");
+}
+
+std::string with(std::string_view from, std::string_view to) {
+  return replaced(std::string(kScene), from, to);
+}
+
+TEST(SceneJson, ValidSceneParsesIntoTheRightValues) {
+  const Parsed<Scene> p = parse(kScene);
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  const Scene& s = p.value();
+  EXPECT_EQ(s.name, "lot");
+  ASSERT_TRUE(s.bounds.has_value());
+  EXPECT_EQ(s.bounds->min, Eigen::Vector2d(-60, -40));
+  EXPECT_EQ(s.bounds->max, Eigen::Vector2d(60, 40));
+  EXPECT_EQ(s.player.position, Eigen::Vector2d(1, 2));
+  EXPECT_EQ(s.player.heading_deg, 0.0);
+  EXPECT_EQ(s.player.length, 4.5);
+  EXPECT_EQ(s.player.width, 1.8);
+  EXPECT_EQ(s.player.health, 80);
+  EXPECT_EQ(s.player.speed, 3.0);
+  ASSERT_EQ(s.parked.size(), 3u);
+  EXPECT_EQ(s.parked[0].id, "A1");
+  EXPECT_EQ(s.parked[0].heading_deg, 90.0);
+  EXPECT_EQ(s.parked[0].box.center, Eigen::Vector2d(10, 5));
+  EXPECT_EQ(s.parked[0].box.half, Eigen::Vector2d(2.25, 0.9));
+  EXPECT_EQ(s.parked[1].id, "A2");
+  EXPECT_EQ(s.parked[1].box.half, Eigen::Vector2d(2, 1));
+  EXPECT_NEAR(s.parked[1].box.axis.x(), std::sqrt(3.0) / 2, 1e-15);
+  EXPECT_NEAR(s.parked[1].box.axis.y(), 0.5, 1e-15);
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  EXPECT_EQ(s.obstacles[0].id, "kerb");
+  EXPECT_EQ(s.obstacles[0].polygon.count, 4);
+}
+
+TEST(SceneJson, Heading90GivesExactAxis) {
+  const Parsed<Scene> p = parse(kScene);
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.value().parked[0].box.axis, Eigen::Vector2d(0, 1));  // exact, not 6e-17
+  EXPECT_EQ(p.value().parked[2].box.axis, Eigen::Vector2d(-1, 0));
+}
+
+TEST(SceneJson, ClockwiseObstacleIsStoredCounterClockwise) {
+  const Parsed<Scene> p = parse(kScene);
+  ASSERT_TRUE(p.ok());
+  const ConvexPolygon& poly = p.value().obstacles[0].polygon;
+  double twice_area = 0;
+  for (int i = 0; i < poly.count; ++i) {
+    const Eigen::Vector2d& a = poly.vertex(i);
+    const Eigen::Vector2d& b = poly.vertex((i + 1) % poly.count);
+    twice_area += a.x() * b.y() - a.y() * b.x();
+  }
+  EXPECT_DOUBLE_EQ(twice_area, 6.0);
+}
+
+TEST(SceneJson, MinimalSceneUsesDefaults) {
+  const Parsed<Scene> p = parseScene(R"({"format": "cardemo-scene/1",
+    "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8}, "parked": []})",
+                                     "scenes/empty-lot.json");
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  EXPECT_EQ(p.value().name, "empty-lot");  // name defaults to the file stem
+  EXPECT_FALSE(p.value().bounds.has_value());
+  EXPECT_EQ(p.value().player.health, 100);
+  EXPECT_EQ(p.value().player.speed, 0.0);
+  EXPECT_TRUE(p.value().parked.empty());
+  EXPECT_TRUE(p.value().obstacles.empty());
+}
+
+TEST(SceneJson, StdinSceneWithoutNameIsNamedScene) {
+  const Parsed<Scene> p = parseScene(
+      R"({"format": "cardemo-scene/1", "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 1, "width": 1}, "parked": []})",
+      "-");
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.value().name, "scene");
+}
+
+TEST(SceneJson, NegativeSpeedWithinLimitIsAccepted) {
+  const Parsed<Scene> p = parse(with("\"speed\": 3", "\"speed\": -1000"));
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  EXPECT_EQ(p.value().player.speed, -1000.0);
+}
+
+TEST(SceneJson, IntegralFloatHealthIsAccepted) {
+  const Parsed<Scene> p = parse(with("\"health\": 80", "\"health\": 8e1"));
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.value().player.health, 80);
+}
+
+TEST(SceneJson, ErrorStringNamesFileLineAndField) {
+  const Parsed<Scene> p = parse(with("\"width\": 2}", "\"width\": 0}"));
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().toString(), "lot.json:16: parked[1].width: must be finite and > 0");
+}
+
+TEST(SceneJson, BundledScenesParse) {
+  for (const char* name : {"parking-lot", "garage", "runway", "large-lot"}) {
+    const Parsed<Scene> p =
+        loadScene(std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/" + name + ".json");
+    ASSERT_TRUE(p.ok()) << p.error().toString();
+    EXPECT_FALSE(p.value().parked.empty()) << name;
+  }
+}
+
+// --- malformed input, one class per test ---
+
+TEST(SceneJsonErrors, EmptyFile) {
+  EXPECT_TRUE(failsAt(parse(""), 1, "empty scene file"));
+}
+
+TEST(SceneJsonErrors, WhitespaceOnlyFile) {
+  EXPECT_TRUE(failsAt(parse("\n \n\t\n"), 1, "empty scene file"));
+}
+
+TEST(SceneJsonErrors, GarbageBytes) {
+  EXPECT_TRUE(failsAt(parse("\xff\xfe\x01garbage"), 1, "invalid JSON"));
+}
+
+TEST(SceneJsonErrors, GarbageBytesOnALaterLine) {
+  EXPECT_TRUE(
+      failsAt(parse("{\n  \"format\": \"cardemo-scene/1\",\n  \xc3\x28\n}"), 3, "invalid JSON"));
+}
+
+TEST(SceneJsonErrors, InvalidUtf8InsideAString) {
+  EXPECT_TRUE(failsAt(parse(with("\"lot\"", "\"l\xff\"")), 3, "invalid JSON in name"));
+}
+
+TEST(SceneJsonErrors, BinaryWithNulByte) {
+  std::string text(kScene);
+  text[text.find("\"A2\"")] = '\0';
+  EXPECT_TRUE(failsAt(parse(text), 16, "NUL byte"));
+}
+
+TEST(SceneJsonErrors, TruncatedJson) {
+  const std::string text(kScene.substr(0, kScene.find("\"A2\"")));
+  EXPECT_TRUE(failsAt(parse(text), 16, "invalid JSON in parked[1]"));
+}
+
+TEST(SceneJsonErrors, TruncatedAfterNewline) {
+  const std::string text(kScene.substr(0, kScene.find("  \"parked\"")));
+  EXPECT_TRUE(failsAt(parse(text), 13, "unexpected end of input"));
+}
+
+TEST(SceneJsonErrors, DeepNesting) {
+  EXPECT_TRUE(failsAt(parse(std::string(100000, '[')), 1, "nesting deeper than 64"));
+  EXPECT_TRUE(failsAt(parse("\n" + std::string(100000, '{')), 2, "invalid JSON"));
+  EXPECT_TRUE(failsAt(
+      parse(with("\"x\": 1,", "\"x\": " + std::string(70, '[') + "1" + std::string(70, ']') + ",")),
+      6, "nesting deeper than 64"));
+}
+
+TEST(SceneJsonErrors, NestingOf64IsNotANestingError) {
+  const std::string text = std::string(64, '[') + std::string(64, ']');
+  EXPECT_TRUE(failsAt(parse(text), 1, "must be a JSON object, found an array"));
+  EXPECT_TRUE(failsAt(parse("[" + text + "]"), 1, "nesting deeper than 64"));
+}
+
+TEST(SceneJsonErrors, NaNLiteral) {
+  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": NaN,")), 6, "invalid JSON in player.x"));
+}
+
+TEST(SceneJsonErrors, InfinityLiteral) {
+  EXPECT_TRUE(failsAt(parse(with("\"y\": 2,", "\"y\": Infinity,")), 7, "invalid JSON in player.y"));
+  EXPECT_TRUE(failsAt(parse(with("\"y\": 2,", "\"y\": -Infinity,")), 7, "invalid JSON"));
+}
+
+TEST(SceneJsonErrors, HugeNumberIsNotFinite) {
+  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": 1e999,")), 6, "player.x: must be finite"));
+  EXPECT_TRUE(failsAt(parse(with("\"width\": 1.8,", "\"width\": -1e999,")), 10,
+                      "player.width: must be finite"));
+  EXPECT_TRUE(
+      failsAt(parse(with("\"x\": 10,", "\"x\": 1e400,")), 15, "parked[0].x: must be finite"));
+}
+
+TEST(SceneJsonErrors, HugeIntegerLiteral) {
+  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": 99999999999999999999999,")), 6,
+                      "player.x: must be finite with |value| <= 1e9"));
+}
+
+TEST(SceneJsonErrors, CoordinateTooLarge) {
+  EXPECT_TRUE(failsAt(parse(with("\"y\": 2,", "\"y\": -2e9,")), 7, "player.y: must be finite"));
+}
+
+TEST(SceneJsonErrors, WrongFormatString) {
+  EXPECT_TRUE(failsAt(parse(with("cardemo-scene/1", "cardemo-scene/2")), 2,
+                      "format: expected \"cardemo-scene/1\", found \"cardemo-scene/2\""));
+}
+
+TEST(SceneJsonErrors, FormatOfWrongType) {
+  EXPECT_TRUE(failsAt(parse(with("\"cardemo-scene/1\"", "1")), 2,
+                      "format: expected a string, found a number"));
+}
+
+TEST(SceneJsonErrors, MissingFormat) {
+  EXPECT_TRUE(
+      failsAt(parse(with("  \"format\": \"cardemo-scene/1\",\n", "")), 1, "missing \"format\""));
+}
+
+TEST(SceneJsonErrors, MissingPlayerField) {
+  EXPECT_TRUE(failsAt(parse(with("    \"y\": 2,\n", "")), 5, "player: missing \"y\""));
+}
+
+TEST(SceneJsonErrors, MissingParked) {
+  EXPECT_TRUE(failsAt(parse(R"({"format": "cardemo-scene/1",
+    "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8}})"),
+                      1, "missing \"parked\""));
+}
+
+TEST(SceneJsonErrors, MissingPlayer) {
+  EXPECT_TRUE(failsAt(parse(R"({"format": "cardemo-scene/1"})"), 1, "missing \"player\""));
+}
+
+TEST(SceneJsonErrors, UnknownKeyTopLevel) {
+  EXPECT_TRUE(failsAt(parse(with("  \"name\": \"lot\",", "  \"name\": \"lot\",\n  \"nmae\": 1,")),
+                      4, "unknown key \"nmae\" in scene"));
+}
+
+TEST(SceneJsonErrors, UnknownKeyNested) {
+  EXPECT_TRUE(
+      failsAt(parse(with("\"health\"", "\"helth\"")), 11, "unknown key \"helth\" in player"));
+  EXPECT_TRUE(failsAt(parse(with("\"width\": 2}", "\"width\": 2, \"colour\": 1}")), 16,
+                      "unknown key \"colour\" in parked[1]"));
+  EXPECT_TRUE(failsAt(parse(with("\"max\": [60, 40]", "\"max\": [60, 40], \"mid\": 0")), 4,
+                      "unknown key \"mid\" in bounds"));
+  EXPECT_TRUE(failsAt(parse(with("{\"id\": \"kerb\"", "{\"id\": \"kerb\", \"z\": 1")), 20,
+                      "unknown key \"z\" in obstacles[0]"));
+}
+
+TEST(SceneJsonErrors, WrongType) {
+  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": \"1\",")), 6,
+                      "player.x: expected a number, found a string"));
+  EXPECT_TRUE(failsAt(parse(with("{\"min\": [-60, -40], \"max\": [60, 40]}", "[-60, 60]")), 4,
+                      "bounds: expected an object, found an array"));
+  EXPECT_TRUE(failsAt(parse(R"({"format": "cardemo-scene/1",
+      "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8},
+      "parked": {}})"),
+                      3, "parked: expected an array, found an object"));
+  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A3\"", "\"id\": 3")), 17,
+                      "parked[2].id: expected a string, found a number"));
+  EXPECT_TRUE(failsAt(parse(with("\"name\": \"lot\"", "\"name\": null")), 3,
+                      "name: expected a string, found null"));
+  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": true")), 12,
+                      "player.speed: expected a number, found a boolean"));
+}
+
+TEST(SceneJsonErrors, RootNotAnObject) {
+  EXPECT_TRUE(failsAt(parse("\n[1, 2]"), 2, "must be a JSON object"));
+  EXPECT_TRUE(failsAt(parse("\"scene\""), 1, "must be a JSON object, found a string"));
+}
+
+TEST(SceneJsonErrors, NegativeLength) {
+  EXPECT_TRUE(failsAt(parse(with("\"length\": 4.5,\n", "\"length\": -4.5,\n")), 9,
+                      "player.length: must be finite and > 0"));
+}
+
+TEST(SceneJsonErrors, ZeroWidth) {
+  EXPECT_TRUE(failsAt(parse(with("\"width\": 1.8,", "\"width\": 0,")), 10,
+                      "player.width: must be finite and > 0"));
+  EXPECT_TRUE(failsAt(parse(with("\"width\": 2}", "\"width\": -0.0}")), 16,
+                      "parked[1].width: must be finite and > 0"));
+}
+
+TEST(SceneJsonErrors, AbsurdlyLongCar) {
+  EXPECT_TRUE(failsAt(parse(with("\"length\": 5,", "\"length\": 1e5,")), 17,
+                      "parked[2].length: must be at most 10000 m"));
+}
+
+TEST(SceneJsonErrors, DuplicateId) {
+  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"A1\"")), 16,
+                      "parked[1].id: duplicate id \"A1\" (also parked[0])"));
+}
+
+TEST(SceneJsonErrors, DuplicateIdAcrossObstacles) {
+  EXPECT_TRUE(failsAt(parse(with("\"id\": \"kerb\"", "\"id\": \"A3\"")), 20,
+                      "obstacles[0].id: duplicate id \"A3\" (also parked[2])"));
+}
+
+TEST(SceneJsonErrors, EmptyOrUnprintableId) {
+  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"\"")), 16, "must not be empty"));
+  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"A\\n2\"")), 16,
+                      "must not contain control characters"));
+  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"A2 \"")), 16,
+                      "must not start or end with a space"));
+}
+
+TEST(SceneJsonErrors, MissingId) {
+  EXPECT_TRUE(failsAt(parse(with("{\"id\": \"A3\", ", "{")), 17, "parked[2]: missing \"id\""));
+}
+
+TEST(SceneJsonErrors, DuplicateKey) {
+  EXPECT_TRUE(
+      failsAt(parse(with("\"y\": 2,", "\"y\": 2, \"x\": 3,")), 7, "duplicate key \"x\" in player"));
+  EXPECT_TRUE(
+      failsAt(parse(with("  \"name\": \"lot\",", "  \"name\": \"lot\",\n  \"name\": \"x\",")), 4,
+              "duplicate key \"name\" in scene"));
+}
+
+TEST(SceneJsonErrors, NonConvexObstacle) {
+  EXPECT_TRUE(failsAt(
+      parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [4, 0], [4, 4], [2, 1], [0, 4]]")),
+      20, "obstacles[0].points: "));
+}
+
+TEST(SceneJsonErrors, DegenerateObstacle) {
+  EXPECT_TRUE(failsAt(parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [1, 1], [2, 2]]")),
+                      20, "obstacles[0].points: "));
+}
+
+TEST(SceneJsonErrors, TooManyPoints) {
+  std::string points = "[";
+  for (int i = 0; i < 17; ++i) {
+    const double a = 2 * 3.141592653589793 * i / 17;
+    points +=
+        (i ? ", [" : "[") + std::to_string(std::cos(a)) + ", " + std::to_string(std::sin(a)) + "]";
+  }
+  points += "]";
+  EXPECT_TRUE(failsAt(parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", points)), 20,
+                      "obstacles[0].points: expected 3 to 16 points, found 17"));
+}
+
+TEST(SceneJsonErrors, TooFewPoints) {
+  EXPECT_TRUE(failsAt(parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [0, 1]]")), 20,
+                      "expected 3 to 16 points, found 2"));
+}
+
+TEST(SceneJsonErrors, PointNotAPair) {
+  EXPECT_TRUE(failsAt(parse(with("[3, 1]", "[3, 1, 2]")), 20,
+                      "obstacles[0].points[2]: expected [x, y], found 3 values"));
+  EXPECT_TRUE(failsAt(parse(with("[3, 1]", "\"3, 1\"")), 20,
+                      "obstacles[0].points[2]: expected an array, found a string"));
+}
+
+TEST(SceneJsonErrors, BoundsMinNotBelowMax) {
+  EXPECT_TRUE(failsAt(parse(with("\"max\": [60, 40]", "\"max\": [60, -40]")), 4,
+                      "bounds: min must be less than max"));
+  EXPECT_TRUE(failsAt(parse(with("\"max\": [60, 40]", "\"max\": [-70, 40]")), 4,
+                      "bounds: min must be less than max"));
+}
+
+TEST(SceneJsonErrors, BoundsMissingMax) {
+  EXPECT_TRUE(failsAt(parse(with(", \"max\": [60, 40]", "")), 4, "bounds: missing \"max\""));
+}
+
+TEST(SceneJsonErrors, HealthZero) {
+  EXPECT_TRUE(
+      failsAt(parse(with("\"health\": 80", "\"health\": 0")), 11, "player.health: must be > 0"));
+}
+
+TEST(SceneJsonErrors, HealthNegative) {
+  EXPECT_TRUE(
+      failsAt(parse(with("\"health\": 80", "\"health\": -5")), 11, "player.health: must be > 0"));
+}
+
+TEST(SceneJsonErrors, HealthNotAnInteger) {
+  EXPECT_TRUE(failsAt(parse(with("\"health\": 80", "\"health\": 80.5")), 11,
+                      "player.health: must be an integer"));
+}
+
+TEST(SceneJsonErrors, HealthTooLarge) {
+  EXPECT_TRUE(failsAt(parse(with("\"health\": 80", "\"health\": 1000001")), 11,
+                      "player.health: must be at most 1000000"));
+}
+
+TEST(SceneJsonErrors, SpeedTooLarge) {
+  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": 1000.5")), 12,
+                      "player.speed: must be finite with |speed| <= 1000"));
+}
+
+TEST(SceneJsonErrors, CommentsAreNotJson) {
+  EXPECT_TRUE(failsAt(parse(with("  \"name\": \"lot\",", "  // a comment\n  \"name\": \"lot\",")),
+                      3, "invalid JSON"));
+}
+
+TEST(SceneJsonErrors, TrailingData) {
+  EXPECT_TRUE(failsAt(parse(std::string(kScene) + "\n{}"), 24, "invalid JSON"));
+}
+
+TEST(SceneJsonErrors, TrailingComma) {
+  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3\n", "\"speed\": 3,\n")), 13, "invalid JSON"));
+}
+
+TEST(SceneJsonErrors, MissingFileReportsLineZero) {
+  const Parsed<Scene> p = loadScene("/nonexistent/cardemo/lot.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().line, 0);
+  EXPECT_NE(p.error().message.find("cannot open"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cardemo
