@@ -114,21 +114,7 @@ int runReplayCommand(const ReplayOptions& options) {
     }
   }
   if (options.print_expect) {
-    Replay outcome;
-    outcome.hz = 0;
-    outcome.expect = expectationsOf(world);
-    std::string lines = formatReplay(outcome);
-    // Keep only the expectation lines of the formatted text.
-    std::string kept;
-    std::size_t start = 0;
-    while (start < lines.size()) {
-      std::size_t end = lines.find('\n', start);
-      if (end == std::string::npos) end = lines.size();
-      const std::string line = lines.substr(start, end - start);
-      if (line.rfind("expect ", 0) == 0) kept += line + "\n";
-      start = end + 1;
-    }
-    std::fputs(kept.c_str(), json_to_stdout ? stderr : stdout);
+    std::fputs(formatExpectations(expectationsOf(world)).c_str(), json_to_stdout ? stderr : stdout);
   }
 
   const std::vector<std::string> diffs = checkExpectations(replay.value(), world);

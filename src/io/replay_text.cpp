@@ -340,14 +340,8 @@ std::string keysText(const InputFrame& keys) {
   return s.empty() ? std::string(".") : s;
 }
 
-std::string formatReplay(const Replay& replay) {
-  std::string out = std::string(kHeader) + "\n";
-  if (!replay.scene.empty()) out += "scene " + replay.scene + "\n";
-  out += "hz " + std::to_string(replay.hz) + "\n";
-  for (const InputRun& run : replay.runs) {
-    out += std::to_string(run.count) + " " + keysText(run.keys) + "\n";
-  }
-  const ReplayExpectations& e = replay.expect;
+std::string formatExpectations(const ReplayExpectations& e) {
+  std::string out;
   if (e.frames) out += "expect frames " + std::to_string(*e.frames) + "\n";
   if (e.health) out += "expect health " + std::to_string(*e.health) + "\n";
   if (e.hit_count) {
@@ -362,6 +356,16 @@ std::string formatReplay(const Replay& replay) {
   }
   if (e.hash) out += "expect hash " + *e.hash + "\n";
   return out;
+}
+
+std::string formatReplay(const Replay& replay) {
+  std::string out = std::string(kHeader) + "\n";
+  if (!replay.scene.empty()) out += "scene " + replay.scene + "\n";
+  out += "hz " + std::to_string(replay.hz) + "\n";
+  for (const InputRun& run : replay.runs) {
+    out += std::to_string(run.count) + " " + keysText(run.keys) + "\n";
+  }
+  return out + formatExpectations(replay.expect);
 }
 
 }  // namespace cardemo

@@ -59,6 +59,9 @@ inline constexpr std::size_t kMaxLineBytes = 4096;
 /// Formats keys as the replay writes them: `.` or letters in the order U D L R.
 [[nodiscard]] std::string keysText(const InputFrame& keys);
 
+/// The expectation lines (`expect ...`) for `expectations`, one per line, in a fixed order.
+[[nodiscard]] std::string formatExpectations(const ReplayExpectations& expectations);
+
 /// Serialises a replay (header, scene, hz, runs, then expectations), parseable by parseReplay.
 [[nodiscard]] std::string formatReplay(const Replay& replay);
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/atomic_file.hpp"
+#include "io/atomic_stream.hpp"
 #include "io/input_error.hpp"
 #include "io/replay_text.hpp"
 #include "io/scene_json.hpp"
@@ -118,6 +119,28 @@ TEST_F(IoFiles, AtomicWriteIntoAMissingFolderFails) {
   const std::string why = writeFileAtomically((dir_ / "no/such/dir/x.txt").string(), "x");
   EXPECT_NE(why.find("cannot create"), std::string::npos) << why;
   EXPECT_NE(why.find("No such file or directory"), std::string::npos) << why;
+}
+
+TEST_F(IoFiles, AtomicStreamPublishesOnlyOnCommit) {
+  const std::string path = write("trace.csv", "previous run");
+  {
+    AtomicStream out(path);
+    ASSERT_EQ(out.error(), "");
+    out.write("frame,x\n");
+    out.sync();
+    EXPECT_EQ(slurp(path), "previous run");  // readers still see the old file
+  }  // destroyed without commit: abandoned
+  EXPECT_EQ(slurp(path), "previous run");
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++entries;
+  EXPECT_EQ(entries, 1);  // no temporary left behind
+
+  AtomicStream out(path);
+  out.write("frame,x\n");
+  out.write("0,1\n");
+  EXPECT_EQ(out.commit(), "");
+  EXPECT_EQ(slurp(path), "frame,x\n0,1\n");
+  EXPECT_NE(out.commit(), "");  // a second commit is refused
 }
 
 TEST_F(IoFiles, AtomicWriteOverADirectoryFailsAndCleansUp) {
