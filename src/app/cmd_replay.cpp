@@ -1,4 +1,5 @@
-// `cardemo replay`: a headless run of a scripted replay, with summary, JSON, trace and expectations.
+// `cardemo replay`: a headless run of a scripted replay, with summary, JSON, trace and
+// expectations.
 
 #include <cstdio>
 #include <string>
@@ -32,7 +33,8 @@ std::string traceRow(const World& world) {
     row += ',';
     row += numberText(v);
   }
-  row += ',' + std::to_string(world.health()) + ',' + std::to_string(world.contacts().size()) + '\n';
+  row +=
+      ',' + std::to_string(world.health()) + ',' + std::to_string(world.contacts().size()) + '\n';
   return row;
 }
 
@@ -44,11 +46,12 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
   std::string out;
   out += "replay    " + options.replay_path + "\n";
   out += "scene     " + scene.name + " (" + std::to_string(scene.parked.size()) + " parked cars, " +
-         std::to_string(scene.obstacles.size()) + " obstacles" + (scene.bounds ? ", walls" : "") + ")\n";
+         std::to_string(scene.obstacles.size()) + " obstacles" + (scene.bounds ? ", walls" : "") +
+         ")\n";
   out += "frames    " + std::to_string(world.frame()) + " at " + numberText(hz) + " Hz (" +
          fixedText(static_cast<double>(world.frame()) / hz, 2) + " s)\n";
-  out += "health    " + std::to_string(world.health()) + " / " + std::to_string(scene.player.health) +
-         (world.gameOver() ? "  GAME OVER" : "") + "\n";
+  out += "health    " + std::to_string(world.health()) + " / " +
+         std::to_string(scene.player.health) + (world.gameOver() ? "  GAME OVER" : "") + "\n";
   out += "hits      " + std::to_string(world.hits().size()) + "\n";
   for (std::size_t i = 0; i < world.hits().size() && i < kMaxHitsShown; ++i) {
     const HitEvent& h = world.hits()[i];
@@ -59,14 +62,14 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
     out += "  ... and " + std::to_string(world.hits().size() - kMaxHitsShown) + " more\n";
   }
   out += "final     x " + fixedText(car.position.x(), 3) + "  y " + fixedText(car.position.y(), 3) +
-         "  heading " + fixedText(degreesOf(car.direction), 2) + " deg  speed " + fixedText(car.speed, 2) +
-         " m/s\n";
+         "  heading " + fixedText(degreesOf(car.direction), 2) + " deg  speed " +
+         fixedText(car.speed, 2) + " m/s\n";
   out += "hash      " + hashHex(world.stateHash()) + "\n";
   out += "work      " + std::to_string(s.broadphase_queries) + " broad-phase queries (" +
          std::to_string(s.skipped_queries) + " skipped: box unchanged), " +
-         std::to_string(s.broadphase_candidates) + " candidates, " + std::to_string(s.narrowphase_tests) +
-         " narrow-phase tests, " + std::to_string(s.contacts) + " contacts, " +
-         std::to_string(s.substeps) + " sub-steps\n";
+         std::to_string(s.broadphase_candidates) + " candidates, " +
+         std::to_string(s.narrowphase_tests) + " narrow-phase tests, " +
+         std::to_string(s.contacts) + " contacts, " + std::to_string(s.substeps) + " sub-steps\n";
   return out;
 }
 
@@ -124,7 +127,8 @@ int runReplayCommand(const ReplayOptions& options) {
     return 1;
   }
   const ReplayExpectations& e = replay.value().expect;
-  if (e.health || e.hit_count || e.hits || e.hash || e.frames) std::fputs("expect    all met\n", report);
+  if (e.health || e.hit_count || e.hits || e.hash || e.frames)
+    std::fputs("expect    all met\n", report);
   return 0;
 }
 
@@ -132,9 +136,11 @@ int runReplayCommand(const ReplayOptions& options) {
 
 void addReplayCommand(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ReplayOptions>();
-  CLI::App* sub = app.add_subcommand("replay", "Run a scripted replay headless and print a summary");
+  CLI::App* sub =
+      app.add_subcommand("replay", "Run a scripted replay headless and print a summary");
   sub->add_option("REPLAY", options->replay_path, "Replay file (cardemo-replay 1)")->required();
-  sub->add_option("--scene", options->scene_path, "Scene file; overrides the replay's `scene` line");
+  sub->add_option("--scene", options->scene_path,
+                  "Scene file; overrides the replay's `scene` line");
   sub->add_option("--json", options->json_path, "Write the summary JSON to FILE (- for stdout)");
   sub->add_option("--trace", options->trace_path, "Write a CSV with one row per frame to FILE");
   sub->add_flag("--print-expect", options->print_expect,

@@ -1,9 +1,8 @@
 /// cardemo: entry point; wires the subcommands together.
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-
-#include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
 

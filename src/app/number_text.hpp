@@ -16,7 +16,8 @@ inline std::string numberText(double value) {
 /// `value` with a fixed number of decimals, for human-readable tables.
 inline std::string fixedText(double value, int decimals) {
   char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
   return {buffer, result.ptr};
 }
 

@@ -42,7 +42,8 @@ class UniformGrid {
 class BruteForceBroadPhase {
  public:
   /// Keeps a copy of the boxes.
-  explicit BruteForceBroadPhase(std::span<const Aabb2> boxes) : boxes_(boxes.begin(), boxes.end()) {}
+  explicit BruteForceBroadPhase(std::span<const Aabb2> boxes)
+      : boxes_(boxes.begin(), boxes.end()) {}
   /// Same contract as UniformGrid::query.
   void query(const Aabb2& query, std::vector<std::uint32_t>& out) const;
 

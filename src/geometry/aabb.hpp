@@ -21,7 +21,9 @@ struct Aabb2 {
            o.max.y() <= max.y();
   }
   /// Smallest box enclosing this one and `o`.
-  [[nodiscard]] Aabb2 merged(const Aabb2& o) const { return {min.cwiseMin(o.min), max.cwiseMax(o.max)}; }
+  [[nodiscard]] Aabb2 merged(const Aabb2& o) const {
+    return {min.cwiseMin(o.min), max.cwiseMax(o.max)};
+  }
   /// Extent along x and y.
   [[nodiscard]] Eigen::Vector2d size() const { return max - min; }
   /// Bitwise equality (used to skip work when nothing moved).
@@ -42,7 +44,9 @@ struct Aabb3 {
     return (min.array() <= o.min.array()).all() && (o.max.array() <= max.array()).all();
   }
   /// Smallest box enclosing this one and `o`.
-  [[nodiscard]] Aabb3 merged(const Aabb3& o) const { return {min.cwiseMin(o.min), max.cwiseMax(o.max)}; }
+  [[nodiscard]] Aabb3 merged(const Aabb3& o) const {
+    return {min.cwiseMin(o.min), max.cwiseMax(o.max)};
+  }
 };
 
 }  // namespace cardemo

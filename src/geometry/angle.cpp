@@ -19,14 +19,20 @@ Eigen::Vector2d unitFromDegrees(double degrees) {
   const double c = r == 0.0 ? 1.0 : std::cos(rad);
   const double s = r == 0.0 ? 0.0 : std::sin(rad);
   switch (quadrant) {
-    case 0: return {c, s};
-    case 1: return {-s, c};
-    case 2: return {-c, -s};
-    default: return {s, -c};
+    case 0:
+      return {c, s};
+    case 1:
+      return {-s, c};
+    case 2:
+      return {-c, -s};
+    default:
+      return {s, -c};
   }
 }
 
-Eigen::Vector2d unitFromRadians(double radians) { return {std::cos(radians), std::sin(radians)}; }
+Eigen::Vector2d unitFromRadians(double radians) {
+  return {std::cos(radians), std::sin(radians)};
+}
 
 double wrapRadians(double radians) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;

@@ -1,12 +1,11 @@
 #pragma once
 /// Convex polygons (obstacles) and their separating-axis tests.
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <span>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "geometry/aabb.hpp"
 #include "geometry/obb2.hpp"
@@ -17,19 +16,21 @@ namespace cardemo {
 /// Convex polygon with 3 to kMaxVertices vertices, stored counter-clockwise; fixed capacity so the
 /// per-frame path never allocates.
 struct ConvexPolygon {
-  static constexpr int kMaxVertices = 16;                 ///< Capacity (the scene format's limit).
-  std::array<Eigen::Vector2d, kMaxVertices> vertices{};   ///< First `count` are used, CCW.
-  int count = 0;                                          ///< Number of vertices in use.
+  static constexpr int kMaxVertices = 16;                ///< Capacity (the scene format's limit).
+  std::array<Eigen::Vector2d, kMaxVertices> vertices{};  ///< First `count` are used, CCW.
+  int count = 0;                                         ///< Number of vertices in use.
 
   /// Builds a polygon from points in either winding. Returns nullopt and sets `why` when the points
   /// are fewer than 3, more than kMaxVertices, not finite, collinear/degenerate, repeated or not
   /// strictly convex.
-  [[nodiscard]] static std::optional<ConvexPolygon> fromPoints(std::span<const Eigen::Vector2d> points,
-                                                               std::string* why = nullptr);
+  [[nodiscard]] static std::optional<ConvexPolygon> fromPoints(
+      std::span<const Eigen::Vector2d> points, std::string* why = nullptr);
   /// The four corners of a box as a polygon.
   [[nodiscard]] static ConvexPolygon fromObb(const Obb2& box);
   /// Vertex i (0 <= i < count).
-  [[nodiscard]] const Eigen::Vector2d& vertex(int i) const { return vertices[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] const Eigen::Vector2d& vertex(int i) const {
+    return vertices[static_cast<std::size_t>(i)];
+  }
   /// Tight axis-aligned bounds.
   [[nodiscard]] Aabb2 aabb() const;
   /// Mean of the vertices (a point strictly inside).

@@ -12,13 +12,15 @@ namespace cardemo {
 /// Oriented box: { center + R * p : |p_i| <= half_i }. `rotation` is stored exactly as computed
 /// from the quaternion (see fromQuaternion); the exact oracle uses these same double entries.
 struct Obb3 {
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();      ///< Centre, metres.
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity(); ///< Columns are the box axes, world frame.
-  Eigen::Vector3d half = Eigen::Vector3d::Ones();         ///< Half extents along the box axes, metres.
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< Centre, metres.
+  Eigen::Matrix3d rotation =
+      Eigen::Matrix3d::Identity();                 ///< Columns are the box axes, world frame.
+  Eigen::Vector3d half = Eigen::Vector3d::Ones();  ///< Half extents along the box axes, metres.
 
   /// Box from centre, quaternion (w, x, y, z; normalised here; must be non-zero and finite) and
   /// full sizes along the box's own x, y, z.
-  [[nodiscard]] static Obb3 fromQuaternion(const Eigen::Vector3d& center, const Eigen::Quaterniond& q,
+  [[nodiscard]] static Obb3 fromQuaternion(const Eigen::Vector3d& center,
+                                           const Eigen::Quaterniond& q,
                                            const Eigen::Vector3d& size);
   /// Tight axis-aligned bounds.
   [[nodiscard]] Aabb3 aabb() const;

@@ -13,7 +13,8 @@ struct RelativePose2 {
 };
 
 RelativePose2 relativePose(const Obb2& a, const Obb2& b) {
-  // Subtract in double first (STYLE 8): the difference is small even when both centres are 1e7 m out.
+  // Subtract in double first (STYLE 8): the difference is small even when both centres are 1e7 m
+  // out.
   const Eigen::Vector2d d = b.center - a.center;
   const Eigen::Vector2d& u = a.axis;
   return {{u.x() * d.x() + u.y() * d.y(), u.x() * d.y() - u.y() * d.x()},

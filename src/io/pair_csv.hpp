@@ -25,9 +25,11 @@ struct PairRow3 {
 
 /// Parses `ax,ay,a_heading_deg,a_length,a_width,bx,by,b_heading_deg,b_length,b_width` rows.
 /// Skips `#` lines, blank lines and a first line starting with a letter (a header).
-[[nodiscard]] Parsed<std::vector<PairRow2>> parsePairs2(std::string_view text, const std::string& filename);
+[[nodiscard]] Parsed<std::vector<PairRow2>> parsePairs2(std::string_view text,
+                                                        const std::string& filename);
 
 /// Parses 3D rows: centre, quaternion (w, x, y, z), full sizes, for A then B (20 numbers).
-[[nodiscard]] Parsed<std::vector<PairRow3>> parsePairs3(std::string_view text, const std::string& filename);
+[[nodiscard]] Parsed<std::vector<PairRow3>> parsePairs3(std::string_view text,
+                                                        const std::string& filename);
 
 }  // namespace cardemo

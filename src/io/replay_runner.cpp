@@ -10,7 +10,8 @@ Parsed<Scene> loadReplayScene(const Replay& replay, const std::string& replay_pa
                               const std::string& scene_override) {
   if (!scene_override.empty()) return loadScene(scene_override);
   if (replay.scene_resolved.empty()) {
-    return InputError{replay_path, 1, "the replay names no scene: add a `scene PATH` line or pass --scene"};
+    return InputError{replay_path, 1,
+                      "the replay names no scene: add a `scene PATH` line or pass --scene"};
   }
   return loadScene(replay.scene_resolved);
 }
@@ -77,8 +78,10 @@ std::vector<std::string> checkExpectations(const Replay& replay, const World& wo
     const auto& w = *want.hits;
     const auto& a = *actual.hits;
     bool same = w.size() == a.size();
-    for (std::size_t i = 0; same && i < w.size(); ++i) same = w[i].frame == a[i].frame && w[i].id == a[i].id;
-    if (!same) diffs.push_back("hit list: expected [" + hitsText(w) + "], got [" + hitsText(a) + "]");
+    for (std::size_t i = 0; same && i < w.size(); ++i)
+      same = w[i].frame == a[i].frame && w[i].id == a[i].id;
+    if (!same)
+      diffs.push_back("hit list: expected [" + hitsText(w) + "], got [" + hitsText(a) + "]");
   }
   if (want.hash && *want.hash != *actual.hash) {
     diffs.push_back("hash: expected " + *want.hash + ", got " + *actual.hash);

@@ -26,16 +26,16 @@ struct ExpectedHit {
 
 /// Expectation lines of a replay; each is optional.
 struct ReplayExpectations {
-  std::optional<int> health;                      ///< `expect health H`
-  std::optional<std::int64_t> hit_count;          ///< `expect hits N`
-  std::optional<std::vector<ExpectedHit>> hits;   ///< `expect hit F ID` lines, in order
-  std::optional<std::string> hash;                ///< `expect hash HEX16`
-  std::optional<std::int64_t> frames;             ///< `expect frames N`
+  std::optional<int> health;                     ///< `expect health H`
+  std::optional<std::int64_t> hit_count;         ///< `expect hits N`
+  std::optional<std::vector<ExpectedHit>> hits;  ///< `expect hit F ID` lines, in order
+  std::optional<std::string> hash;               ///< `expect hash HEX16`
+  std::optional<std::int64_t> frames;            ///< `expect frames N`
 };
 
 /// A parsed replay.
 struct Replay {
-  std::string scene;           ///< Scene path as written (relative to the replay's folder); may be empty.
+  std::string scene;  ///< Scene path as written (relative to the replay's folder); may be empty.
   std::string scene_resolved;  ///< Scene path resolved against the replay file's folder.
   int hz = 120;                ///< Fixed steps per second, 1..10000.
   std::vector<InputRun> runs;  ///< Inputs in order.

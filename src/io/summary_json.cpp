@@ -7,7 +7,8 @@ namespace {
 
 // Integral rates print as integers, as the contract shows them.
 nlohmann::json hzJson(double hz) {
-  if (hz == static_cast<double>(static_cast<std::int64_t>(hz))) return static_cast<std::int64_t>(hz);
+  if (hz == static_cast<double>(static_cast<std::int64_t>(hz)))
+    return static_cast<std::int64_t>(hz);
   return hz;
 }
 

@@ -7,7 +7,8 @@
 
 namespace cardemo {
 
-/// Builds the summary JSON of a world after a run: scene, hz, frames, health, hits, final, hash, stats.
+/// Builds the summary JSON of a world after a run: scene, hz, frames, health, hits, final, hash,
+/// stats.
 [[nodiscard]] nlohmann::json summaryJson(const World& world);
 
 }  // namespace cardemo

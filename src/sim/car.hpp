@@ -10,20 +10,20 @@ namespace cardemo {
 
 /// Tunable car parameters; defaults suit a 4.5 m family car.
 struct CarParams {
-  double length = 4.5;              ///< Body length along the heading, metres.
-  double width = 1.8;               ///< Body width, metres.
-  double wheelbase = 2.7;           ///< Axle distance, metres (bicycle model).
-  double engine_accel = 4.0;        ///< Throttle acceleration at low speed, m/s^2.
-  double brake_decel = 9.0;         ///< Braking deceleration, m/s^2.
-  double reverse_accel = 2.5;       ///< Reverse acceleration, m/s^2.
-  double max_reverse_speed = 8.0;   ///< Reverse is limited to this speed, m/s.
-  double drag = 0.0016;             ///< Aerodynamic drag coefficient: a = drag * v * |v|, 1/m.
-  double rolling_resistance = 0.15; ///< Constant deceleration while rolling, m/s^2.
-  double max_steer = 0.6;           ///< Steering lock at standstill, radians.
-  double steer_rate = 2.5;          ///< Steering wheel rate limit, radians of wheel angle per second.
-  double lock_speed = 20.0;         ///< Speed (m/s) at which the lock has narrowed to half.
-  double restitution = 0.2;         ///< Share of the normal speed that bounces back after an impact.
-  double bounce_threshold = 1.0;    ///< Impacts slower than this (m/s) do not bounce at all.
+  double length = 4.5;               ///< Body length along the heading, metres.
+  double width = 1.8;                ///< Body width, metres.
+  double wheelbase = 2.7;            ///< Axle distance, metres (bicycle model).
+  double engine_accel = 4.0;         ///< Throttle acceleration at low speed, m/s^2.
+  double brake_decel = 9.0;          ///< Braking deceleration, m/s^2.
+  double reverse_accel = 2.5;        ///< Reverse acceleration, m/s^2.
+  double max_reverse_speed = 8.0;    ///< Reverse is limited to this speed, m/s.
+  double drag = 0.0016;              ///< Aerodynamic drag coefficient: a = drag * v * |v|, 1/m.
+  double rolling_resistance = 0.15;  ///< Constant deceleration while rolling, m/s^2.
+  double max_steer = 0.6;            ///< Steering lock at standstill, radians.
+  double steer_rate = 2.5;        ///< Steering wheel rate limit, radians of wheel angle per second.
+  double lock_speed = 20.0;       ///< Speed (m/s) at which the lock has narrowed to half.
+  double restitution = 0.2;       ///< Share of the normal speed that bounces back after an impact.
+  double bounce_threshold = 1.0;  ///< Impacts slower than this (m/s) do not bounce at all.
 };
 
 /// Kinematic state of the player's car.
@@ -31,8 +31,8 @@ struct CarState {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< Centre, world metres.
   double heading = 0.0;  ///< Radians CCW from +x, wrapped to (-pi, pi].
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  ///< (cos, sin) of heading, kept in sync.
-  double speed = 0.0;    ///< Signed speed along the heading, m/s (negative when reversing).
-  double steer = 0.0;    ///< Front-wheel angle, radians, positive to the left.
+  double speed = 0.0;  ///< Signed speed along the heading, m/s (negative when reversing).
+  double steer = 0.0;  ///< Front-wheel angle, radians, positive to the left.
 
   /// Velocity vector in the world frame, m/s.
   [[nodiscard]] Eigen::Vector2d velocity() const { return direction * speed; }

@@ -14,7 +14,8 @@ struct InputFrame {
 
   /// Packs the keys into 4 bits: U=1, D=2, L=4, R=8.
   [[nodiscard]] std::uint8_t bits() const {
-    return static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0) | (left ? 4 : 0) | (right ? 8 : 0));
+    return static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0) | (left ? 4 : 0) |
+                                     (right ? 8 : 0));
   }
   /// Inverse of bits().
   [[nodiscard]] static InputFrame fromBits(std::uint8_t b) {

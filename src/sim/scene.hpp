@@ -1,11 +1,10 @@
 #pragma once
 /// A loaded scene: the player's start, the parked cars, obstacles and walls. Plain data.
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "geometry/aabb.hpp"
 #include "geometry/convex_polygon.hpp"
@@ -15,8 +14,8 @@ namespace cardemo {
 
 /// A parked car: a static box with an id.
 struct ParkedCar {
-  std::string id;  ///< Unique, non-empty.
-  Obb2 box;        ///< World box.
+  std::string id;            ///< Unique, non-empty.
+  Obb2 box;                  ///< World box.
   double heading_deg = 0.0;  ///< Heading as written in the scene, degrees.
 };
 
@@ -29,11 +28,11 @@ struct Obstacle {
 /// The player's starting pose and body.
 struct PlayerStart {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< Centre, world metres.
-  double heading_deg = 0.0;  ///< Degrees CCW from +x.
-  double length = 4.5;       ///< Metres along the heading.
-  double width = 1.8;        ///< Metres across.
-  int health = 100;          ///< Starting health (> 0).
-  double speed = 0.0;        ///< Initial forward speed, m/s.
+  double heading_deg = 0.0;                            ///< Degrees CCW from +x.
+  double length = 4.5;                                 ///< Metres along the heading.
+  double width = 1.8;                                  ///< Metres across.
+  int health = 100;                                    ///< Starting health (> 0).
+  double speed = 0.0;                                  ///< Initial forward speed, m/s.
 };
 
 /// Everything a scene file describes.

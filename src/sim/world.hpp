@@ -21,13 +21,13 @@ enum class BroadPhaseBox {
 
 /// World settings; defaults are the game's.
 struct WorldSettings {
-  double hz = 120.0;                        ///< Fixed steps per second.
-  CarParams car;                            ///< Car tuning (length/width come from the scene).
+  double hz = 120.0;  ///< Fixed steps per second.
+  CarParams car;      ///< Car tuning (length/width come from the scene).
   BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;  ///< Player box used for queries.
-  int damage_min = 5;                       ///< Damage of the gentlest hit.
-  int damage_max = 50;                      ///< Damage of the hardest hit.
-  double damage_per_mps = 3.0;              ///< Damage per m/s of normal impact speed (rounded up).
-  int max_push_iterations = 4;              ///< Contact resolution passes per step.
+  int damage_min = 5;                                     ///< Damage of the gentlest hit.
+  int damage_max = 50;                                    ///< Damage of the hardest hit.
+  double damage_per_mps = 3.0;  ///< Damage per m/s of normal impact speed (rounded up).
+  int max_push_iterations = 4;  ///< Contact resolution passes per step.
 };
 
 /// A hit: the first frame of contact with one static collider.
@@ -51,9 +51,9 @@ struct WorldStats {
 
 /// A contact of the current frame (for the debug overlay and the trace).
 struct ActiveContact {
-  std::uint32_t collider = 0;                          ///< Collider index.
-  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();   ///< From the player to the collider.
-  double separation = 0.0;                             ///< Before push-out, metres (<= 0).
+  std::uint32_t collider = 0;                         ///< Collider index.
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  ///< From the player to the collider.
+  double separation = 0.0;                            ///< Before push-out, metres (<= 0).
 };
 
 /// The world: owns the scene, the broad phase (built once) and the player's car.
@@ -116,9 +116,9 @@ class World {
 
   // Per-step scratch (reserved once, so step() does not allocate when warm).
   std::vector<ActiveContact> previous_contacts_;  // last frame's contacts_, to clear touching_
-  std::vector<double> contact_speed_;  // closing speed of contacts_[k] when first detected
+  std::vector<double> contact_speed_;    // closing speed of contacts_[k] when first detected
   std::vector<ActiveContact> detected_;  // contacts at the current pose (last detect())
-  Obb2 detected_box_;  // player box that detected_ belongs to
+  Obb2 detected_box_;                    // player box that detected_ belongs to
   bool have_detected_ = false;
 
   void detect();

@@ -1,7 +1,6 @@
 // End-to-end tests of the cardemo executable: exit statuses, error lines and outputs.
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -46,7 +45,9 @@ std::filesystem::path writeTemp(const std::string& name, const std::string& text
   return p;
 }
 
-int countLines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+int countLines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(Cli, HelpAndVersionSucceed) {
   EXPECT_EQ(cardemo("--help").status, 0);
@@ -73,17 +74,18 @@ TEST(Cli, MissingReplayNamesTheFile) {
 }
 
 TEST(Cli, BadReplayLineIsReported) {
-  const auto p = writeTemp("bad.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") +
-                                             "\n10 U\n5 X\n");
+  const auto p = writeTemp("bad.replay", "cardemo-replay 1\nscene " +
+                                             asset("scenes/parking-lot.json") + "\n10 U\n5 X\n");
   const CliResult r = cardemo("replay " + p.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind(p.string() + ":4:", 0), 0u) << r.err;
 }
 
 TEST(Cli, BadSceneLineIsReported) {
-  const auto scene = writeTemp("bad.json", "{\n  \"format\": \"cardemo-scene/1\",\n  \"parked\": [],\n"
-                                           "  \"player\": {\"x\": 0, \"y\": 0, \"heading_deg\": 0,\n"
-                                           "    \"length\": -4.5, \"width\": 1.8}\n}\n");
+  const auto scene = writeTemp("bad.json",
+                               "{\n  \"format\": \"cardemo-scene/1\",\n  \"parked\": [],\n"
+                               "  \"player\": {\"x\": 0, \"y\": 0, \"heading_deg\": 0,\n"
+                               "    \"length\": -4.5, \"width\": 1.8}\n}\n");
   const auto replay = writeTemp("ok.replay", "cardemo-replay 1\nscene bad.json\n10 U\n");
   const CliResult r = cardemo("replay " + replay.string());
   EXPECT_EQ(r.status, 2);
@@ -97,12 +99,14 @@ TEST(Cli, ReplayWithoutSceneIsAnError) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind(p.string() + ":1:", 0), 0u) << r.err;
   // --scene supplies it.
-  EXPECT_EQ(cardemo("replay " + p.string() + " --scene " + asset("scenes/parking-lot.json")).status, 0);
+  EXPECT_EQ(cardemo("replay " + p.string() + " --scene " + asset("scenes/parking-lot.json")).status,
+            0);
 }
 
 TEST(Cli, FailedExpectationExitsOneAndSaysWhat) {
-  const auto p = writeTemp("expect.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") +
-                                                "\n10 .\nexpect health 99\nexpect hits 3\n");
+  const auto p =
+      writeTemp("expect.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") +
+                                     "\n10 .\nexpect health 99\nexpect hits 3\n");
   const CliResult r = cardemo("replay " + p.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("health: expected 99, got 100"), std::string::npos) << r.out;
@@ -112,9 +116,10 @@ TEST(Cli, FailedExpectationExitsOneAndSaysWhat) {
 TEST(Cli, JsonSummaryHasTheContractFields) {
   const CliResult r = cardemo("replay " + asset("replays/head-on.replay") + " --json -");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* key : {"\"scene\"", "\"hz\"", "\"frames\"", "\"health\"", "\"hits\"", "\"final\"",
-                          "\"heading_deg\"", "\"hash\"", "\"stats\"", "\"broadphase_queries\"",
-                          "\"broadphase_candidates\"", "\"narrowphase_tests\"", "\"contacts\""}) {
+  for (const char* key :
+       {"\"scene\"", "\"hz\"", "\"frames\"", "\"health\"", "\"hits\"", "\"final\"",
+        "\"heading_deg\"", "\"hash\"", "\"stats\"", "\"broadphase_queries\"",
+        "\"broadphase_candidates\"", "\"narrowphase_tests\"", "\"contacts\""}) {
     EXPECT_NE(r.out.find(key), std::string::npos) << key;
   }
   EXPECT_EQ(r.out.front(), '{');  // the human summary went to stderr
@@ -123,8 +128,9 @@ TEST(Cli, JsonSummaryHasTheContractFields) {
 TEST(Cli, TraceHasOneRowPerFrame) {
   const auto trace = kTemp / "trace.csv";
   std::filesystem::remove(trace);
-  const auto replay = writeTemp("trace.replay", "cardemo-replay 1\nscene " +
-                                                    asset("scenes/parking-lot.json") + "\n30 U\n20 UL\n");
+  const auto replay =
+      writeTemp("trace.replay",
+                "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") + "\n30 U\n20 UL\n");
   const CliResult r = cardemo("replay " + replay.string() + " --trace " + trace.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string csv = slurp(trace);
@@ -136,8 +142,8 @@ TEST(Cli, Collide2dRowsInOrder) {
   const std::string csv =
       "ax,ay,ah,al,aw,bx,by,bh,bl,bw\n"
       "# comment\n"
-      "0,0,0,4,2,5,0,0,4,2\n"      // gap of 1 along x
-      "0,0,0,4,2,4,0,0,4,2\n"      // touching
+      "0,0,0,4,2,5,0,0,4,2\n"  // gap of 1 along x
+      "0,0,0,4,2,4,0,0,4,2\n"  // touching
       "\n"
       "0,0,0,4,2,2.5,0,90,4,2\n";  // B rotated 90: overlap 0.5
   const CliResult r = cardemo("collide -", csv);

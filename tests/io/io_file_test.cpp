@@ -129,7 +129,7 @@ TEST_F(IoFiles, AtomicStreamPublishesOnlyOnCommit) {
     out.write("frame,x\n");
     out.sync();
     EXPECT_EQ(slurp(path), "previous run");  // readers still see the old file
-  }  // destroyed without commit: abandoned
+  }                                          // destroyed without commit: abandoned
   EXPECT_EQ(slurp(path), "previous run");
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++entries;

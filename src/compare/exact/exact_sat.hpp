@@ -2,9 +2,9 @@
 /// Exact oracle for the separating-axis queries, in GMP rationals.
 ///
 /// The inputs' double values are taken as exact rationals (a box is exactly the set its Obb2/Obb3/
-/// ConvexPolygon definition describes). The hit verdict is exact. The separation is each axis's exact
-/// rational gap divided by the axis length, evaluated with 256-bit floats, so it is correct to far
-/// below a nanometre.
+/// ConvexPolygon definition describes). The hit verdict is exact. The separation is each axis's
+/// exact rational gap divided by the axis length, evaluated with 256-bit floats, so it is correct
+/// to far below a nanometre.
 
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
