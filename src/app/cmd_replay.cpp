@@ -2,6 +2,7 @@
 // expectations.
 
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include "app/commands.hpp"
@@ -21,6 +22,7 @@ struct ReplayOptions {
   std::string json_path;
   std::string trace_path;
   bool print_expect = false;
+  BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;
 };
 
 constexpr std::size_t kMaxHitsShown = 12;
@@ -84,7 +86,9 @@ int runReplayCommand(const ReplayOptions& options) {
     std::fprintf(stderr, "%s\n", scene.error().toString().c_str());
     return 2;
   }
-  World world(std::move(scene).value(), settingsForReplay(replay.value()));
+  WorldSettings settings = settingsForReplay(replay.value());
+  settings.broad_phase_box = options.broad_phase_box;
+  World world(std::move(scene).value(), settings);
 
   std::unique_ptr<AtomicStream> trace;
   if (!options.trace_path.empty()) {
@@ -143,6 +147,12 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
                   "Scene file; overrides the replay's `scene` line");
   sub->add_option("--json", options->json_path, "Write the summary JSON to FILE (- for stdout)");
   sub->add_option("--trace", options->trace_path, "Write a CSV with one row per frame to FILE");
+  const std::map<std::string, BroadPhaseBox> boxes{{"tight", BroadPhaseBox::kTight},
+                                                   {"rotation-proof", BroadPhaseBox::kRotationProof}};
+  sub->add_option("--broadphase-box", options->broad_phase_box,
+                  "Player box for broad-phase queries: tight (default) or rotation-proof (the seed "
+                  "demo's box around the circumscribed circle), to compare their candidate counts")
+      ->transform(CLI::CheckedTransformer(boxes, CLI::ignore_case));
   sub->add_flag("--print-expect", options->print_expect,
                 "Print expectation lines that describe this run (to paste into the replay)");
   sub->callback([options, &exit_code] { exit_code = runReplayCommand(*options); });

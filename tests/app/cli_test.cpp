@@ -151,6 +151,39 @@ TEST(Cli, Collide2dRowsInOrder) {
   EXPECT_EQ(r.out, "0,1,1,0\n1,0,1,0\n1,-0.5,1,0\n");
 }
 
+TEST(Cli, Collide2dExactFarFromTheOrigin) {
+  // B (rotated 90 degrees, exact) touches A's +x face exactly, 1e7 m out: a hit with sep 0.
+  const CliResult r = cardemo("collide -", "10000000,-10000000,0,4,2,10000003,-10000000,90,4,2\n"
+                                           "10000000,-10000000,0,4,2,10000003.000001,-10000000,90,4,2\n");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string second = r.out.substr(r.out.find('\n') + 1);
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n') + 1), "1,0,1,0\n");
+  EXPECT_EQ(second.rfind("0,", 0), 0u) << second;  // 1 um apart: separated
+  EXPECT_NEAR(std::stod(second.substr(2)), 1e-6, 2e-9) << second;
+}
+
+TEST(Cli, RotationProofBroadPhaseChangesWorkNotResults) {
+  for (const char* name : {"demo", "scrape", "garage", "reverse"}) {
+    const std::string replay = asset(std::string("replays/") + name + ".replay");
+    const CliResult tight = cardemo("replay " + replay + " --json -");
+    const CliResult loose = cardemo("replay " + replay + " --json - --broadphase-box rotation-proof");
+    ASSERT_EQ(tight.status, 0) << name << tight.err;
+    ASSERT_EQ(loose.status, 0) << name << loose.err;
+    const auto field = [](const std::string& json, const std::string& key) {
+      const std::size_t at = json.find("\"" + key + "\"");
+      return json.substr(at, json.find_first_of(",\n}", at) - at);
+    };
+    EXPECT_EQ(field(tight.out, "hash"), field(loose.out, "hash")) << name;
+    EXPECT_EQ(field(tight.out, "health"), field(loose.out, "health")) << name;
+    const auto count = [&](const std::string& json) {
+      const std::string f = field(json, "broadphase_candidates");
+      return std::stoll(f.substr(f.find(':') + 1));
+    };
+    EXPECT_GE(count(loose.out), count(tight.out)) << name;
+  }
+  EXPECT_EQ(cardemo("replay " + asset("replays/demo.replay") + " --broadphase-box round").status, 2);
+}
+
 TEST(Cli, Collide3dAndBadRows) {
   const CliResult ok = cardemo("collide - --dim 3", "0,0,0,1,0,0,0,2,2,2,3,0,0,1,0,0,0,2,2,2\n");
   ASSERT_EQ(ok.status, 0) << ok.err;
