@@ -147,8 +147,8 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
                   "Scene file; overrides the replay's `scene` line");
   sub->add_option("--json", options->json_path, "Write the summary JSON to FILE (- for stdout)");
   sub->add_option("--trace", options->trace_path, "Write a CSV with one row per frame to FILE");
-  const std::map<std::string, BroadPhaseBox> boxes{{"tight", BroadPhaseBox::kTight},
-                                                   {"rotation-proof", BroadPhaseBox::kRotationProof}};
+  const std::map<std::string, BroadPhaseBox> boxes{
+      {"tight", BroadPhaseBox::kTight}, {"rotation-proof", BroadPhaseBox::kRotationProof}};
   sub->add_option("--broadphase-box", options->broad_phase_box,
                   "Player box for broad-phase queries: tight (default) or rotation-proof (the seed "
                   "demo's box around the circumscribed circle), to compare their candidate counts")

@@ -12,4 +12,20 @@ void addReplayCommand(CLI::App& app, int& exit_code);
 /// `cardemo collide PAIRS [--dim 2|3]`.
 void addCollideCommand(CLI::App& app, int& exit_code);
 
+#ifdef CARDEMO_HAVE_SDL
+/// `cardemo play [SCENE] [--record FILE] [--replay FILE] [--json FILE]`: the game in a window.
+void addPlayCommand(CLI::App& app, int& exit_code);
+
+/// `cardemo render (SCENE|REPLAY) [--frame N] [--debug] --out FILE.png`: one frame, no display.
+void addRenderCommand(CLI::App& app, int& exit_code);
+#endif
+
+#ifdef CARDEMO_HAVE_COMPARE
+/// `cardemo compare REPLAY [--scene S] [--json FILE|-] [--radius R] [--all-exact]`.
+void addCompareCommand(CLI::App& app, int& exit_code);
+
+/// `cardemo compare-sweep [--pairs N] [--seed S]`: random box pairs, disagreement tables.
+void addCompareSweepCommand(CLI::App& app, int& exit_code);
+#endif
+
 }  // namespace cardemo::app

@@ -13,6 +13,14 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   cardemo::app::addReplayCommand(app, exit_code);
   cardemo::app::addCollideCommand(app, exit_code);
+#ifdef CARDEMO_HAVE_COMPARE
+  cardemo::app::addCompareCommand(app, exit_code);
+  cardemo::app::addCompareSweepCommand(app, exit_code);
+#endif
+#ifdef CARDEMO_HAVE_SDL
+  cardemo::app::addPlayCommand(app, exit_code);
+  cardemo::app::addRenderCommand(app, exit_code);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,29 @@
+#pragma once
+/// Samples held keys into one InputFrame per fixed step, so a press shorter than a step counts.
+
+#include "sim/input_frame.hpp"
+
+namespace cardemo {
+
+/// The four driving keys.
+enum class DriveKey { kUp, kDown, kLeft, kRight };
+
+/// Collects key presses and releases between steps. sample() reports a key as held for the step if
+/// it is held now or was pressed at any time since the previous sample.
+class InputLatch {
+ public:
+  /// A key went down.
+  void press(DriveKey key);
+  /// A key went up.
+  void release(DriveKey key);
+  /// Releases everything (e.g. when the window loses focus).
+  void releaseAll();
+  /// The InputFrame for the next step; clears the "pressed since last sample" marks.
+  [[nodiscard]] InputFrame sample();
+
+ private:
+  InputFrame held_;
+  InputFrame pressed_since_sample_;
+};
+
+}  // namespace cardemo
