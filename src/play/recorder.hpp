@@ -9,14 +9,15 @@
 
 namespace cardemo {
 
-/// Writes `cardemo-replay 1` text to `PATH.part` while playing: runs of equal inputs are merged, and
-/// the file is flushed at least once per `flush_every_frames` so a killed game loses at most that
-/// much. finish() writes the last run (and optional expectation lines), fsyncs and renames the file
-/// onto PATH, so PATH is always either absent/old or a complete replay.
+/// Writes `cardemo-replay 1` text to `PATH.part` while playing: runs of equal inputs are merged,
+/// and the file is flushed at least once per `flush_every_frames` so a killed game loses at most
+/// that much. finish() writes the last run (and optional expectation lines), fsyncs and renames the
+/// file onto PATH, so PATH is always either absent/old or a complete replay.
 class Recorder {
  public:
   /// Starts a recording; `scene_path` is written relative to PATH's folder when possible.
-  Recorder(std::string path, const std::string& scene_path, int hz, std::int64_t flush_every_frames);
+  Recorder(std::string path, const std::string& scene_path, int hz,
+           std::int64_t flush_every_frames);
   ~Recorder();
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;

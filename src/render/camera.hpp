@@ -8,9 +8,10 @@ namespace cardemo {
 /// A view of the world. Positions are subtracted in double before converting to float, so the
 /// picture is as sharp at 1e7 m from the origin as at the origin.
 struct Camera {
-  Eigen::Vector2d center = Eigen::Vector2d::Zero();  ///< World point at the middle of the view, metres.
-  double pixels_per_metre = 12.0;                    ///< Zoom.
-  Eigen::Vector2i viewport{1280, 720};               ///< Size in pixels.
+  Eigen::Vector2d center =
+      Eigen::Vector2d::Zero();          ///< World point at the middle of the view, metres.
+  double pixels_per_metre = 12.0;       ///< Zoom.
+  Eigen::Vector2i viewport{1280, 720};  ///< Size in pixels.
 
   /// Pixel position of a world point (y flipped: +y is up in the world, down on screen).
   [[nodiscard]] Eigen::Vector2f toScreen(const Eigen::Vector2d& world) const {

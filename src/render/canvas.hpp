@@ -1,11 +1,10 @@
 #pragma once
 /// The drawing surface the renderer draws through; SDL implements it in src/platform/.
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <span>
 #include <string_view>
-
-#include <Eigen/Core>
 
 namespace cardemo {
 

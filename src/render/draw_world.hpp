@@ -13,12 +13,18 @@ namespace cardemo {
 
 /// What to draw besides the world itself.
 struct DrawOptions {
-  bool debug_overlay = false;   ///< AABB (green), OBBs (red), candidates, normals, MTV arrows, counters.
-  bool help = false;            ///< The F1 help panel listing every key.
-  bool paused = false;          ///< Shows PAUSED.
-  double fps = 0.0;             ///< Frames per second shown in the HUD (0 hides it).
-  double playback_speed = 0.0;  ///< Replay speed shown in the HUD while playing a replay (0 hides it).
-  std::string status;           ///< Extra one-line status (e.g. "recording to drive.replay").
+  /// AABB (green), OBBs (red), candidates, contact normals, MTV arrows and live counters.
+  bool debug_overlay = false;
+  /// The F1 help panel listing every key.
+  bool help = false;
+  /// Shows PAUSED.
+  bool paused = false;
+  /// Frames per second shown in the HUD (0 hides it).
+  double fps = 0.0;
+  /// Replay speed shown in the HUD while playing a replay (0 hides it).
+  double playback_speed = 0.0;
+  /// Extra one-line status (e.g. "recording to drive.replay").
+  std::string status;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).

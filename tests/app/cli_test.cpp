@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -16,7 +17,9 @@ struct CliResult {
   std::string err;
 };
 
-const std::filesystem::path kTemp = std::filesystem::temp_directory_path() / "cardemo_cli_test";
+// One folder per test process: CTest runs the tests of this file in parallel processes.
+const std::filesystem::path kTemp =
+    std::filesystem::temp_directory_path() / ("cardemo_cli_test." + std::to_string(::getpid()));
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream f(p, std::ios::binary);
@@ -153,8 +156,9 @@ TEST(Cli, Collide2dRowsInOrder) {
 
 TEST(Cli, Collide2dExactFarFromTheOrigin) {
   // B (rotated 90 degrees, exact) touches A's +x face exactly, 1e7 m out: a hit with sep 0.
-  const CliResult r = cardemo("collide -", "10000000,-10000000,0,4,2,10000003,-10000000,90,4,2\n"
-                                           "10000000,-10000000,0,4,2,10000003.000001,-10000000,90,4,2\n");
+  const CliResult r = cardemo("collide -",
+                              "10000000,-10000000,0,4,2,10000003,-10000000,90,4,2\n"
+                              "10000000,-10000000,0,4,2,10000003.000001,-10000000,90,4,2\n");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string second = r.out.substr(r.out.find('\n') + 1);
   EXPECT_EQ(r.out.substr(0, r.out.find('\n') + 1), "1,0,1,0\n");
@@ -166,7 +170,8 @@ TEST(Cli, RotationProofBroadPhaseChangesWorkNotResults) {
   for (const char* name : {"demo", "scrape", "garage", "reverse"}) {
     const std::string replay = asset(std::string("replays/") + name + ".replay");
     const CliResult tight = cardemo("replay " + replay + " --json -");
-    const CliResult loose = cardemo("replay " + replay + " --json - --broadphase-box rotation-proof");
+    const CliResult loose =
+        cardemo("replay " + replay + " --json - --broadphase-box rotation-proof");
     ASSERT_EQ(tight.status, 0) << name << tight.err;
     ASSERT_EQ(loose.status, 0) << name << loose.err;
     const auto field = [](const std::string& json, const std::string& key) {
@@ -181,7 +186,8 @@ TEST(Cli, RotationProofBroadPhaseChangesWorkNotResults) {
     };
     EXPECT_GE(count(loose.out), count(tight.out)) << name;
   }
-  EXPECT_EQ(cardemo("replay " + asset("replays/demo.replay") + " --broadphase-box round").status, 2);
+  EXPECT_EQ(cardemo("replay " + asset("replays/demo.replay") + " --broadphase-box round").status,
+            2);
 }
 
 TEST(Cli, Collide3dAndBadRows) {

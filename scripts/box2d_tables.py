@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""Reproduces the tables of docs/box2d-comparison.md.
+
+Usage: scripts/box2d_tables.py [path/to/cardemo] [--pairs N] [--seed S]
+
+Runs `cardemo compare --json -` on every bundled replay (the 10,100-car lot in full) and
+`cardemo compare-sweep`, and prints markdown.
+"""
+import glob
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+VERDICTS = ["ours", "box2d", "box2d_overlap", "box2d_skin", "box2d_skin_overlap"]
+
+
+def hits_of(obj):
+    return {(h["frame"], h["id"]) for h in obj}
+
+
+def main(argv):
+    binary = os.path.join(ROOT, "build", "cardemo")
+    pairs, seed = "1000000", "1"
+    args = list(argv)
+    while args:
+        a = args.pop(0)
+        if a == "--pairs":
+            pairs = args.pop(0)
+        elif a == "--seed":
+            seed = args.pop(0)
+        else:
+            binary = a
+    print("## Bundled replays (`cardemo compare REPLAY --json -`)\n")
+    print("Cells: disagree / borderline against the exact oracle; hits: first contacts implied "
+          "(differing from the oracle's).\n")
+    print("| replay | pairs | " + " | ".join(VERDICTS) + " | exact hits |")
+    print("|---|---|" + "---|" * len(VERDICTS) + "---|")
+    for replay in sorted(glob.glob(os.path.join(ROOT, "assets", "replays", "*.replay"))):
+        run = subprocess.run([binary, "compare", replay, "--json", "-"], capture_output=True,
+                             text=True, check=False)
+        if run.returncode not in (0, 1):
+            sys.exit(f"{replay}: cardemo compare exited {run.returncode}: {run.stderr}")
+        j = json.loads(run.stdout)
+        exact = hits_of(j["exact_hits"])
+        cells = []
+        for v in VERDICTS:
+            o = j[v]
+            mine = hits_of(o["hits"])
+            cells.append(f'{o["disagree"]} / {o["borderline"]}; hits {len(mine)} '
+                         f'({len(mine ^ exact)})')
+        name = os.path.basename(replay)
+        print(f'| {name} | {j["pairs_checked"]} | ' + " | ".join(cells) + f" | {len(exact)} |")
+    print(f"\n## Random box pairs (`cardemo compare-sweep --pairs {pairs} --seed {seed}`)\n")
+    run = subprocess.run([binary, "compare-sweep", "--pairs", pairs, "--seed", seed],
+                         capture_output=True, text=True, check=False)
+    if run.returncode not in (0, 1):
+        sys.exit(f"cardemo compare-sweep exited {run.returncode}: {run.stderr}")
+    print(run.stdout)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

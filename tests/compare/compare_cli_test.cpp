@@ -1,0 +1,112 @@
+// End-to-end tests of `cardemo compare` and `cardemo collide --oracle`: exit statuses, JSON fields.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct CliResult {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+const std::filesystem::path kTemp =
+    std::filesystem::temp_directory_path() / "cardemo_compare_cli_test";
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// Per-test file names: ctest -j runs this binary's tests in parallel.
+std::filesystem::path tempFile(const std::string& suffix) {
+  return kTemp / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                  "." + suffix);
+}
+
+// Runs `cardemo ARGS` through the shell, capturing stdout, stderr and the exit status.
+CliResult cardemo(const std::string& args, const std::string& stdin_text = "") {
+  std::filesystem::create_directories(kTemp);
+  const auto in = tempFile("stdin"), out = tempFile("stdout"), err = tempFile("stderr");
+  std::ofstream(in, std::ios::binary) << stdin_text;
+  const std::string command = std::string(CARDEMO_BINARY) + " " + args + " <" + in.string() + " >" +
+                              out.string() + " 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+std::string replay(const std::string& name) {
+  return std::string(CARDEMO_SOURCE_DIR) + "/assets/replays/" + name;
+}
+
+std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
+  std::filesystem::create_directories(kTemp);
+  const auto p = tempFile(name);
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+TEST(CompareCli, HelpSucceeds) {
+  EXPECT_EQ(cardemo("compare --help").status, 0);
+  EXPECT_EQ(cardemo("compare-sweep --help").status, 0);
+}
+
+TEST(CompareCli, JsonHasTheContractFields) {
+  const CliResult r = cardemo("compare " + replay("head-on.replay") + " --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j.at("frames").get<int>(), 0);
+  EXPECT_GT(j.at("pairs_checked").get<int>(), 0);
+  for (const char* key : {"exact", "box2d", "ours", "box2d_skin"}) {
+    SCOPED_TRACE(key);
+    const nlohmann::json& t = j.at(key);
+    EXPECT_EQ(t.at("agree").get<long long>() + t.at("disagree").get<long long>() +
+                  t.at("borderline").get<long long>(),
+              j.at("pairs_checked").get<long long>());
+  }
+  EXPECT_EQ(j.at("exact").at("disagree"), 0);
+  ASSERT_TRUE(j.at("box2d").at("hits").is_array());
+  ASSERT_FALSE(j.at("box2d").at("hits").empty());
+  EXPECT_TRUE(j.at("box2d").at("hits")[0].contains("frame"));
+  EXPECT_EQ(j.at("box2d").at("hits")[0].at("id"), "E1");
+  EXPECT_FALSE(j.contains("radius"));
+  EXPECT_NE(r.err.find("box2d"), std::string::npos);  // the table goes to stderr with --json -
+}
+
+TEST(CompareCli, RadiusIsReported) {
+  const auto json = tempFile("out.json");
+  const CliResult r =
+      cardemo("compare " + replay("demo.replay") + " --radius 8 --json " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("within"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(slurp(json)).at("radius"), 8.0);
+}
+
+TEST(CompareCli, BadInputExitsTwoWithFileAndLine) {
+  const auto bad = writeTemp("bad.replay", "cardemo-replay 1\nscene x.json\n5 Q\n");
+  const CliResult r = cardemo("compare " + bad.string() + " --scene " +
+                              std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/garage.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(bad.string() + ":3:"), std::string::npos) << r.err;
+  EXPECT_EQ(cardemo("compare /nonexistent.replay").status, 2);
+  EXPECT_EQ(cardemo("compare " + replay("demo.replay") + " --radius -1").status, 2);
+  EXPECT_EQ(cardemo("compare").status, 2);
+}
+
+TEST(CompareCli, CollideOracleColumns) {
+  const std::string rows = "-1,0,0,2,2,1,0,0,2,2\n0,0,0,2,2,5,0,0,2,2\n";
+  const CliResult r = cardemo("collide - --oracle exact,box2d", rows);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // hit,sep,nx,ny,exact_hit,exact_sep,b2_overlap,b2_points
+  EXPECT_EQ(r.out, "1,0,1,0,1,0,1,2\n0,3,1,0,0,3,0,0\n");
+  EXPECT_EQ(cardemo("collide - --oracle nope", rows).status, 2);
+  EXPECT_EQ(cardemo("collide - --dim 3 --oracle box2d", rows).status, 2);
+}
+
+}  // namespace
