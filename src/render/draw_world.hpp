@@ -36,6 +36,7 @@ struct Palette {
   Rgba obstacle{150, 140, 120};  ///< Convex obstacles.
   Rgba player{230, 60, 50};      ///< The player's car.
   Rgba windscreen{20, 24, 30};   ///< Windscreens (show a car's heading).
+  Rgba outside{22, 24, 27};      ///< Ground beyond the walls (when the scene has bounds).
 };
 
 /// Draws the whole frame: world (with the player drawn at `player_box`, which may be interpolated

@@ -1,0 +1,138 @@
+// `cardemo render`: one frame of a scene or a replay, drawn without a window or display into a PNG.
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "io/replay_runner.hpp"
+#include "io/scene_json.hpp"
+#include "platform/png_render.hpp"
+
+namespace cardemo::app {
+namespace {
+
+struct RenderOptions {
+  std::string input;
+  std::string scene_path;
+  std::string out;
+  std::optional<std::int64_t> frame;
+  bool debug = false;
+  bool help = false;
+  int width = 1280;
+  int height = 720;
+  double zoom = 12.0;
+  std::vector<double> center;
+};
+
+bool isReplayFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string first;
+  if (!in || !std::getline(in, first)) return false;
+  if (!first.empty() && first.back() == '\r') first.pop_back();
+  return first == "cardemo-replay 1";
+}
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "%s\n", message.c_str());
+  return 2;
+}
+
+// Steps the world through the replay's inputs up to `frame`.
+void runReplayTo(World& world, const Replay& replay, std::int64_t frame) {
+  for (const InputRun& run : replay.runs) {
+    for (std::int64_t i = 0; i < run.count; ++i) {
+      if (world.frame() >= frame) return;
+      world.step(run.keys);
+    }
+  }
+}
+
+std::string baseName(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+int runRenderCommand(const RenderOptions& options) {
+  // CLI::Range lets NaN through (every comparison with it is false).
+  if (!(options.zoom >= 0.01 && options.zoom <= 10000.0)) {
+    return fail("cardemo render: --zoom must be a number from 0.01 to 10000 pixels per metre");
+  }
+  for (double c : options.center) {
+    if (!(std::abs(c) <= 1e9)) return fail("cardemo render: --center must be two finite numbers");
+  }
+  std::optional<World> world;
+  if (isReplayFile(options.input)) {
+    const Parsed<Replay> replay = loadReplay(options.input);
+    if (!replay.ok()) return fail(replay.error().toString());
+    Parsed<Scene> scene = loadReplayScene(replay.value(), options.input, options.scene_path);
+    if (!scene.ok()) return fail(scene.error().toString());
+    const std::int64_t total = replay.value().totalFrames();
+    const std::int64_t frame = options.frame.value_or(total);
+    if (frame > total) {
+      return fail(options.input + ": --frame " + std::to_string(frame) +
+                  " is beyond the end of the replay (frames 0 to " + std::to_string(total) + ")");
+    }
+    world.emplace(std::move(scene).value(), settingsForReplay(replay.value()));
+    runReplayTo(*world, replay.value(), frame);
+  } else {
+    if (!options.scene_path.empty()) {
+      return fail(options.input + ": --scene applies to replays only (this is not a replay)");
+    }
+    Parsed<Scene> scene = loadScene(options.input);
+    if (!scene.ok()) return fail(scene.error().toString());
+    world.emplace(std::move(scene).value());
+    // A scene has no inputs: frame N is N steps with nothing held.
+    for (std::int64_t i = 0; i < options.frame.value_or(0); ++i) world->step(InputFrame{});
+  }
+
+  RenderSettings settings;
+  settings.width = options.width;
+  settings.height = options.height;
+  settings.pixels_per_metre = options.zoom;
+  if (!options.center.empty())
+    settings.center = Eigen::Vector2d(options.center[0], options.center[1]);
+  settings.options.debug_overlay = options.debug;
+  settings.options.help = options.help;
+  settings.options.status = baseName(options.input) + "  -  " + world->scene().name;
+  if (std::string why = renderPng(*world, settings, options.out); !why.empty()) return fail(why);
+  std::printf("wrote %s (%dx%d, frame %lld)\n", options.out.c_str(), options.width, options.height,
+              static_cast<long long>(world->frame()));
+  return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "render", "Draw one frame of a scene or replay into a PNG, with no window or display");
+  sub->add_option("INPUT", options->input,
+                  "Scene (JSON) or replay (a file starting `cardemo-replay 1`)")
+      ->required();
+  sub->add_option("--out", options->out, "PNG file to write")->required();
+  sub->add_option("--frame", options->frame,
+                  "Frame to draw (replay: default the last; scene: default 0, N = N steps with no "
+                  "input)")
+      ->check(CLI::Range(std::int64_t{0}, kMaxReplayFrames));
+  sub->add_option("--scene", options->scene_path,
+                  "Scene file for a replay; overrides the replay's `scene` line");
+  sub->add_option("--center", options->center,
+                  "World point X Y (metres) at the middle of the picture (default: the player)")
+      ->expected(2);
+  sub->add_flag("--debug", options->debug,
+                "Draw the debug overlay (AABB, OBBs, candidates, contacts, counters)");
+  sub->add_flag("--help-panel", options->help, "Draw the F1 help panel");
+  sub->add_option("--width", options->width, "Image width in pixels (16 to 8192)")
+      ->check(CLI::Range(16, 8192));
+  sub->add_option("--height", options->height, "Image height in pixels (16 to 8192)")
+      ->check(CLI::Range(16, 8192));
+  sub->add_option("--zoom", options->zoom, "Pixels per metre (0.01 to 10000)")
+      ->check(CLI::Range(0.01, 10000.0));
+  sub->callback([options, &exit_code] { exit_code = runRenderCommand(*options); });
+}
+
+}  // namespace cardemo::app

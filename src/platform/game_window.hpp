@@ -1,0 +1,24 @@
+#pragma once
+/// The game window (`cardemo play`). This header is SDL-free so the command can stay SDL-free.
+
+#include <string>
+
+#include "play/game_session.hpp"
+
+namespace cardemo {
+
+/// What the window plays.
+struct GameWindowOptions {
+  SessionConfig session;    ///< Scene, rate, playback and recording.
+  std::string json_path;    ///< Summary JSON written when the game ends (empty: none).
+  std::string replay_path;  ///< The replay being played, for the status line (may be empty).
+};
+
+/// True when an X11 or Wayland display is named in the environment.
+[[nodiscard]] bool displayAvailable();
+
+/// Opens the window and runs the game until Esc, window close, SIGINT or SIGTERM. Returns the exit
+/// status: 0 normally, 1 when no display can be opened, 2 when an output cannot be written.
+[[nodiscard]] int runGameWindow(GameWindowOptions options);
+
+}  // namespace cardemo

@@ -1,0 +1,18 @@
+#pragma once
+/// Saving SDL pixels as PNG files, atomically (temporary file, then rename).
+
+#include <SDL.h>
+
+#include <string>
+
+namespace cardemo {
+
+/// Writes `surface` to `path` as PNG through `path.tmp.PID` and a rename, so a reader never sees a
+/// half-written file. Returns an empty string on success, else `path: what went wrong`.
+[[nodiscard]] std::string savePng(SDL_Surface* surface, const std::string& path);
+
+/// Reads back what `renderer` has drawn (e.g. a window's frame before SDL_RenderPresent, for F12)
+/// and saves it with savePng.
+[[nodiscard]] std::string saveRendererPng(SDL_Renderer* renderer, const std::string& path);
+
+}  // namespace cardemo

@@ -1,0 +1,218 @@
+#include "render/hud.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/shapes.hpp"
+
+namespace cardemo {
+namespace {
+
+constexpr Rgba kPanel{12, 14, 18, 190};
+constexpr Rgba kText{235, 238, 242};
+constexpr Rgba kDim{160, 168, 178};
+constexpr Rgba kTrough{55, 58, 64};
+
+std::string format(const char* fmt, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
+}
+
+int px(float size, float scale) {
+  return static_cast<int>(std::lround(size * scale));
+}
+
+// A panel of `lines` rows of text; returns nothing, draws at `top_left`.
+void textPanel(Canvas& canvas, const Eigen::Vector2f& top_left,
+               const std::vector<std::pair<std::string, Rgba>>& lines, int height, float pad) {
+  float w = 0.0f;
+  for (const auto& [s, c] : lines) w = std::max(w, canvas.textSize(s, height).x());
+  const float row = static_cast<float>(height) * 1.3f;
+  fillRect(canvas, top_left,
+           {w + 2.0f * pad, row * static_cast<float>(lines.size()) + 2.0f * pad - 0.3f * height},
+           kPanel);
+  Eigen::Vector2f at = top_left + Eigen::Vector2f{pad, pad};
+  for (const auto& [s, c] : lines) {
+    canvas.text(at, s, height, c);
+    at.y() += row;
+  }
+}
+
+}  // namespace
+
+float tableWidth(Canvas& canvas, const std::vector<HudRow>& rows, int text_px) {
+  float label = 0.0f;
+  float value = 0.0f;
+  for (const HudRow& r : rows) {
+    label = std::max(label, canvas.textSize(r.label, text_px).x());
+    value = std::max(value, canvas.textSize(r.value, text_px).x());
+  }
+  return label + 1.5f * static_cast<float>(text_px) + value;
+}
+
+float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
+                const std::vector<HudRow>& rows, int text_px) {
+  const float row = static_cast<float>(text_px) * 1.3f;
+  float y = top_left.y();
+  for (const HudRow& r : rows) {
+    canvas.text({top_left.x(), y}, r.label, text_px, r.color);
+    if (!r.value.empty()) {
+      const float w = canvas.textSize(r.value, text_px).x();
+      canvas.text({top_left.x() + width - w, y}, r.value, text_px, r.color);
+    }
+    y += row;
+  }
+  return row * static_cast<float>(rows.size());
+}
+
+Rgba healthColor(double fraction) {
+  const double f = std::clamp(fraction, 0.0, 1.0);
+  auto lerp = [](double a, double b, double t) {
+    return static_cast<std::uint8_t>(std::lround(a + (b - a) * t));
+  };
+  // Red (0) -> yellow (0.5) -> green (1), like the seed demo's bar.
+  if (f < 0.5) return {lerp(220, 230, 2 * f), lerp(40, 200, 2 * f), 40, 255};
+  return {lerp(230, 60, 2 * f - 1), lerp(200, 200, 2 * f - 1), lerp(40, 70, 2 * f - 1), 255};
+}
+
+float hudScale(const Eigen::Vector2i& viewport) {
+  return std::clamp(static_cast<float>(viewport.y()) / 720.0f, 0.75f, 2.5f);
+}
+
+void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,
+                   int health, int max_health) {
+  const double fraction =
+      max_health > 0 ? std::clamp(static_cast<double>(health) / max_health, 0.0, 1.0) : 0.0;
+  fillRect(canvas, top_left, size, kTrough);
+  if (fraction > 0.0) {
+    fillRect(canvas, top_left, {static_cast<float>(size.x() * fraction), size.y()},
+             healthColor(fraction));
+  }
+  const int h = std::max(8, static_cast<int>(size.y() * 0.72f));
+  const std::string label = std::to_string(health) + " / " + std::to_string(max_health);
+  const Eigen::Vector2f ts = canvas.textSize(label, h);
+  const Eigen::Vector2f at = top_left + Eigen::Vector2f{6.0f, 0.5f * (size.y() - ts.y())};
+  canvas.text(at + Eigen::Vector2f{1.0f, 1.0f}, label, h, {0, 0, 0, 200});
+  canvas.text(at, label, h, kText);
+}
+
+void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
+  const float pad = 10.0f * s;
+  const int h = px(16, s);
+  std::vector<HudRow> rows;
+  rows.push_back({"Speed", format("%.0f km/h", std::abs(world.car().speed) * 3.6), kText});
+  rows.push_back({"Hits", std::to_string(world.hits().size()), kText});
+  rows.push_back({"Frame", std::to_string(world.frame()), kDim});
+  if (options.fps > 0.0) rows.push_back({"FPS", format("%.0f", options.fps), kDim});
+  if (options.playback_speed > 0.0) {
+    rows.push_back({"Replay speed", format("%gx", options.playback_speed), kDim});
+  }
+  const Eigen::Vector2f bar_size{240.0f * s, 22.0f * s};
+  const Eigen::Vector2f origin{12.0f * s, 12.0f * s};
+  // One panel behind both the bar and the table.
+  const float row = static_cast<float>(h) * 1.3f;
+  fillRect(canvas, origin,
+           {bar_size.x() + 2.0f * pad,
+            bar_size.y() + pad * 2.5f + row * static_cast<float>(rows.size())},
+           kPanel);
+  drawHealthBar(canvas, origin + Eigen::Vector2f{pad, pad}, bar_size, world.health(),
+                world.scene().player.health);
+  drawTable(canvas, origin + Eigen::Vector2f{pad, pad * 1.8f + bar_size.y()}, bar_size.x(), rows,
+            h);
+
+  const int small = px(14, s);
+  if (!options.status.empty()) {
+    textPanel(canvas, {12.0f * s, static_cast<float>(vp.y()) - 12.0f * s - 1.3f * small - pad},
+              {{options.status, kDim}}, small, pad * 0.6f);
+  }
+  if (!options.help) {
+    const std::string hint = "F1 help";
+    const Eigen::Vector2f ts = canvas.textSize(hint, small);
+    canvas.text({static_cast<float>(vp.x()) - ts.x() - 14.0f * s,
+                 static_cast<float>(vp.y()) - ts.y() - 12.0f * s},
+                hint, small, kDim);
+  }
+  if (options.paused) {
+    const int big = px(30, s);
+    const std::string text = "PAUSED";
+    const Eigen::Vector2f ts = canvas.textSize(text, big);
+    textPanel(canvas, {0.5f * (static_cast<float>(vp.x()) - ts.x()) - pad, 14.0f * s},
+              {{text, {255, 220, 90, 255}}}, big, pad);
+  }
+}
+
+void drawGameOver(Canvas& canvas, const World& world) {
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
+  const int big = px(48, s);
+  const int small = px(18, s);
+  const std::string title = "GAME OVER";
+  const std::string detail =
+      std::to_string(world.hits().size()) + " hits in " +
+      format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz);
+  const std::string hint = "R restart    Esc quit";
+  const Eigen::Vector2f t = canvas.textSize(title, big);
+  const float w = std::max(t.x(), canvas.textSize(hint, small).x()) + 80.0f * s;
+  const float hgt = t.y() + 3.0f * small * 1.4f + 40.0f * s;
+  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w),
+                           0.5f * (static_cast<float>(vp.y()) - hgt)};
+  fillRect(canvas, tl, {w, hgt}, {60, 10, 12, 215});
+  canvas.text({tl.x() + 0.5f * (w - t.x()), tl.y() + 18.0f * s}, title, big, {255, 90, 80, 255});
+  float y = tl.y() + 18.0f * s + t.y() + 8.0f * s;
+  for (const std::string& line : {detail, hint}) {
+    const Eigen::Vector2f ls = canvas.textSize(line, small);
+    canvas.text({tl.x() + 0.5f * (w - ls.x()), y}, line, small, kText);
+    y += small * 1.5f;
+  }
+}
+
+const std::vector<std::pair<std::string, std::string>>& helpKeys() {
+  static const std::vector<std::pair<std::string, std::string>> keys{
+      {"Up / Down", "throttle / brake, then reverse"},
+      {"Left / Right", "steer"},
+      {"P", "pause / resume"},
+      {"N", "step one frame while paused"},
+      {"R", "restart"},
+      {"B", "debug overlay (AABB, OBBs, candidates, contacts)"},
+      {"+ / -", "zoom in / out"},
+      {"[ / ]", "replay speed (0.25x to 8x)"},
+      {"F12", "save a PNG screenshot"},
+      {"F1", "this help"},
+      {"Esc", "quit"},
+  };
+  return keys;
+}
+
+void drawHelp(Canvas& canvas) {
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
+  const int h = px(17, s);
+  const int title_h = px(22, s);
+  const float row = h * 1.45f;
+  float key_w = 0.0f;
+  float desc_w = 0.0f;
+  for (const auto& [k, d] : helpKeys()) {
+    key_w = std::max(key_w, canvas.textSize(k, h).x());
+    desc_w = std::max(desc_w, canvas.textSize(d, h).x());
+  }
+  const float gap = 24.0f * s;
+  const float pad = 22.0f * s;
+  const float w = key_w + gap + desc_w + 2.0f * pad;
+  const float hgt = title_h * 1.8f + row * static_cast<float>(helpKeys().size()) + 2.0f * pad;
+  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w),
+                           0.5f * (static_cast<float>(vp.y()) - hgt)};
+  fillRect(canvas, tl, {w, hgt}, {12, 14, 18, 225});
+  canvas.text(tl + Eigen::Vector2f{pad, pad}, "Keys", title_h, {255, 220, 90, 255});
+  float y = tl.y() + pad + title_h * 1.8f;
+  for (const auto& [k, d] : helpKeys()) {
+    canvas.text({tl.x() + pad, y}, k, h, {255, 220, 90, 255});
+    canvas.text({tl.x() + pad + key_w + gap, y}, d, h, kText);
+    y += row;
+  }
+}
+
+}  // namespace cardemo

@@ -1,0 +1,51 @@
+#pragma once
+/// Screen-space overlays: the HUD (health bar, speed, hits, frame, FPS), PAUSED, the game-over
+/// panel and the F1 help panel.
+
+#include <string>
+#include <vector>
+
+#include "render/canvas.hpp"
+#include "render/draw_world.hpp"
+#include "sim/world.hpp"
+
+namespace cardemo {
+
+/// Health bar colour: green when full, through yellow, to red when empty (`fraction` in 0..1).
+[[nodiscard]] Rgba healthColor(double fraction);
+
+/// Size factor for HUD text and panels at a viewport height (1 at 720 px).
+[[nodiscard]] float hudScale(const Eigen::Vector2i& viewport);
+
+/// The health bar: a dark trough of `size`, filled from the left in proportion to health, with
+/// the number written on it.
+void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,
+                   int health, int max_health);
+
+/// One row of a two-column table.
+struct HudRow {
+  std::string label;  ///< Left, e.g. "Speed".
+  std::string value;  ///< Right-aligned, e.g. "42 km/h".
+  Rgba color;         ///< Colour of both.
+};
+
+/// Width a table needs: widest label, a gap, widest value.
+[[nodiscard]] float tableWidth(Canvas& canvas, const std::vector<HudRow>& rows, int text_px);
+
+/// Draws rows `width` pixels wide (labels left, values right-aligned); returns the height used.
+float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
+                const std::vector<HudRow>& rows, int text_px);
+
+/// The HUD panel at the top left, the status line, PAUSED and the help hint.
+void drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
+
+/// The game-over panel in the middle of the screen.
+void drawGameOver(Canvas& canvas, const World& world);
+
+/// Every key and what it does, as the help panel lists them.
+[[nodiscard]] const std::vector<std::pair<std::string, std::string>>& helpKeys();
+
+/// The F1 help panel.
+void drawHelp(Canvas& canvas);
+
+}  // namespace cardemo

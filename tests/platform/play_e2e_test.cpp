@@ -1,0 +1,253 @@
+// End-to-end: `cardemo play` under Xvfb driven by xdotool; the recording must replay headless to
+// the same outcome, and a game stopped by SIGINT must leave a valid recording.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "io/replay_text.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+bool haveTool(const std::string& name) {
+  return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// A child process that is killed (and reaped) if the test leaves before it exits.
+class Child {
+ public:
+  Child(const std::vector<std::string>& argv, const std::string& display, const fs::path& log) {
+    pid_ = fork();
+    if (pid_ == 0) {
+      if (!display.empty()) setenv("DISPLAY", display.c_str(), 1);
+      if (std::freopen(log.c_str(), "w", stdout) == nullptr) _exit(126);
+      dup2(fileno(stdout), STDERR_FILENO);
+      std::vector<char*> args;
+      for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+      args.push_back(nullptr);
+      execvp(args[0], args.data());
+      _exit(127);
+    }
+  }
+  ~Child() {
+    if (running()) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+
+  [[nodiscard]] pid_t pid() const { return pid_; }
+  [[nodiscard]] bool running() {
+    if (pid_ <= 0 || exited_) return false;
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      exited_ = true;
+      status_ = status;
+      return false;
+    }
+    return true;
+  }
+  /// Waits up to `timeout`; returns the exit status, or -1 (after SIGKILL) on timeout or a signal.
+  int wait(std::chrono::milliseconds timeout) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (running() && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(20ms);
+    if (running()) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+      exited_ = true;
+      return -1;
+    }
+    return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  bool exited_ = false;
+  int status_ = 0;
+};
+
+// Runs a shell command with DISPLAY set; returns its exit status and fills `out` with stdout.
+int shell(const std::string& display, const std::string& command, std::string* out = nullptr,
+          fs::path scratch = {}) {
+  // Per process: other test processes (ctest -j, other build trees) run the same code.
+  if (scratch.empty()) {
+    scratch = fs::temp_directory_path() / ("cardemo_e2e_shell." + std::to_string(getpid()));
+  }
+  const std::string line =
+      "DISPLAY=" + display + " timeout 20 " + command + " >" + scratch.string() + " 2>/dev/null";
+  const int raw = std::system(line.c_str());
+  if (out != nullptr) *out = slurp(scratch);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+class PlayE2e : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!haveTool("Xvfb") || !haveTool("xdotool") || !haveTool("timeout")) {
+      GTEST_SKIP() << "Xvfb, xdotool or timeout is not installed (scripts/packages.txt lists them)";
+    }
+    dir_ = fs::temp_directory_path() /
+           ("cardemo_e2e_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    int n = 100 + static_cast<int>(getpid() % 800);
+    while (fs::exists("/tmp/.X11-unix/X" + std::to_string(n)) ||
+           fs::exists("/tmp/.X" + std::to_string(n) + "-lock")) {
+      ++n;
+    }
+    display_ = ":" + std::to_string(n);
+    xvfb_ = std::make_unique<Child>(std::vector<std::string>{"Xvfb", display_, "-screen", "0",
+                                                             "1280x720x24", "-nolisten", "tcp"},
+                                    "", dir_ / "xvfb.log");
+    const auto end = std::chrono::steady_clock::now() + 10s;
+    while (std::chrono::steady_clock::now() < end &&
+           shell(display_, "xdotool getmouselocation") != 0) {
+      std::this_thread::sleep_for(100ms);
+    }
+    ASSERT_EQ(shell(display_, "xdotool getmouselocation"), 0)
+        << "Xvfb did not start: " << slurp(dir_ / "xvfb.log");
+  }
+
+  void TearDown() override {
+    if (xvfb_) {
+      kill(xvfb_->pid(), SIGTERM);
+      (void)xvfb_->wait(5s);
+    }
+    if (!HasFailure() && !dir_.empty()) fs::remove_all(dir_);
+    fs::remove(fs::temp_directory_path() / ("cardemo_e2e_shell." + std::to_string(getpid())));
+  }
+
+  // Starts the game with `args`, then finds its window by pid and focuses it.
+  std::unique_ptr<Child> startGame(const std::vector<std::string>& args, const std::string& log) {
+    std::vector<std::string> argv{CARDEMO_BINARY, "play"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    auto game = std::make_unique<Child>(argv, display_, dir_ / log);
+    std::string windows;
+    const auto end = std::chrono::steady_clock::now() + 15s;
+    while (std::chrono::steady_clock::now() < end && game->running()) {
+      if (shell(display_, "xdotool search --onlyvisible --pid " + std::to_string(game->pid()),
+                &windows) == 0 &&
+          !windows.empty()) {
+        break;
+      }
+      std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_FALSE(windows.empty()) << "no window for pid " << game->pid() << ": "
+                                  << slurp(dir_ / log);
+    const std::string window = windows.substr(0, windows.find('\n'));
+    // The window may be found a moment before it is mapped; focusing it fails until then.
+    bool focused = false;
+    for (int i = 0; i < 50 && !focused && !windows.empty(); ++i) {
+      focused = shell(display_, "timeout 2 xdotool windowfocus --sync " + window) == 0;
+      if (!focused) std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_TRUE(focused) << "cannot focus window " << window;
+    std::this_thread::sleep_for(300ms);  // let the first frames run
+    return game;
+  }
+
+  fs::path dir_;
+  std::string display_;
+  std::unique_ptr<Child> xvfb_;
+};
+
+nlohmann::json loadJson(const std::string& text) {
+  return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+}
+
+TEST_F(PlayE2e, DriveIntoTheCarAheadThenReplayHeadless) {
+  const fs::path record = dir_ / "drive.replay";
+  const fs::path json = dir_ / "drive.json";
+  auto game = startGame({"--record", record.string(), "--json", json.string()}, "play.log");
+  ASSERT_TRUE(game->running()) << slurp(dir_ / "play.log");
+  // Full throttle from (-45, 0) reaches E1 at x = 50 in about 7 s of game time.
+  shell(display_, "xdotool keydown Up");
+  std::this_thread::sleep_for(9500ms);
+  shell(display_, "xdotool keyup Up");
+  std::this_thread::sleep_for(300ms);
+  shell(display_, "xdotool key Escape");
+  ASSERT_EQ(game->wait(10s), 0) << slurp(dir_ / "play.log");
+
+  const nlohmann::json live = loadJson(slurp(json));
+  ASSERT_TRUE(live.is_object()) << "no summary JSON written";
+  ASSERT_TRUE(fs::exists(record));
+  EXPECT_FALSE(fs::exists(dir_ / "drive.replay.part"));
+  const cardemo::Parsed<cardemo::Replay> replay = cardemo::loadReplay(record.string());
+  ASSERT_TRUE(replay.ok()) << replay.error().toString();
+  EXPECT_EQ(replay.value().totalFrames(), live["frames"].get<std::int64_t>());
+
+  std::string out;
+  ASSERT_EQ(shell("", std::string(CARDEMO_BINARY) + " replay " + record.string() + " --json -",
+                  &out, dir_ / "replay.out"),
+            0);
+  const nlohmann::json headless = loadJson(out);
+  ASSERT_TRUE(headless.is_object()) << out;
+  EXPECT_EQ(headless["hash"], live["hash"]);
+  EXPECT_EQ(headless["health"], live["health"]);
+  EXPECT_EQ(headless["hits"], live["hits"]);
+  EXPECT_EQ(headless["frames"], live["frames"]);
+  bool hit_e1 = false;
+  for (const auto& hit : live["hits"]) hit_e1 = hit_e1 || hit["id"] == "E1";
+  EXPECT_TRUE(hit_e1) << "expected a hit on E1: " << live.dump();
+}
+
+TEST_F(PlayE2e, SigintMidDriveLeavesAValidRecording) {
+  const fs::path record = dir_ / "interrupted.replay";
+  auto game = startGame({"--record", record.string()}, "play.log");
+  ASSERT_TRUE(game->running()) << slurp(dir_ / "play.log");
+  shell(display_, "xdotool keydown Up");
+  std::this_thread::sleep_for(2s);
+  kill(game->pid(), SIGINT);
+  const int status = game->wait(10s);
+  shell(display_, "xdotool keyup Up");
+  ASSERT_EQ(status, 0) << slurp(dir_ / "play.log");
+  ASSERT_TRUE(fs::exists(record));
+  const cardemo::Parsed<cardemo::Replay> replay = cardemo::loadReplay(record.string());
+  ASSERT_TRUE(replay.ok()) << replay.error().toString();
+  EXPECT_GT(replay.value().totalFrames(), 0);
+  bool drove = false;
+  for (const auto& run : replay.value().runs) drove = drove || run.keys.up;
+  EXPECT_TRUE(drove) << slurp(record);
+  EXPECT_EQ(shell("", std::string(CARDEMO_BINARY) + " replay " + record.string(), nullptr,
+                  dir_ / "replay.out"),
+            0);
+}
+
+TEST(PlayNoDisplay, SaysSoAndExitsOne) {
+  const std::string command =
+      "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(CARDEMO_BINARY) + " play 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string text;
+  char buf[256];
+  while (std::fgets(buf, sizeof buf, pipe) != nullptr) text += buf;
+  const int raw = pclose(pipe);
+  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 1);
+  EXPECT_NE(text.find("cardemo render"), std::string::npos) << text;
+  EXPECT_NE(text.find("cardemo replay"), std::string::npos) << text;
+}
+
+}  // namespace

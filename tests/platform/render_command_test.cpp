@@ -1,0 +1,209 @@
+// `cardemo render` golden tests by property (size, colours where the cars are, frames differ), not
+// exact pixels, which vary across SDL versions. CommandResult with no DISPLAY to prove none is
+// needed.
+
+#include <SDL.h>
+#include <SDL_image.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "io/scene_json.hpp"
+#include "render/draw_world.hpp"
+
+namespace cardemo {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSource = CARDEMO_SOURCE_DIR;
+const std::string kLot = kSource + "/assets/scenes/parking-lot.json";
+const std::string kHeadOn = kSource + "/assets/replays/head-on.replay";
+
+// A folder per test, so tests run in parallel (ctest -j) do not share files.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "cardemo-render-test" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+struct CommandResult {
+  int status = -1;
+  std::string err;
+};
+
+// Runs `cardemo render ARGS` with no display in the environment.
+CommandResult render(const std::string& args) {
+  const fs::path err = scratch("stderr.txt");
+  const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER '" +
+                          std::string(CARDEMO_BINARY) + "' render " + args + " >/dev/null 2>'" +
+                          err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  std::ifstream f(err);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
+          {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()}};
+}
+
+using Surface = std::unique_ptr<SDL_Surface, decltype(&SDL_FreeSurface)>;
+
+Surface loadRgba(const fs::path& path) {
+  Surface loaded(IMG_Load(path.c_str()), &SDL_FreeSurface);
+  if (!loaded) return {nullptr, &SDL_FreeSurface};
+  return {SDL_ConvertSurfaceFormat(loaded.get(), SDL_PIXELFORMAT_RGBA32, 0), &SDL_FreeSurface};
+}
+
+Rgba pixel(const SDL_Surface& s, int x, int y) {
+  const auto* p = static_cast<const std::uint8_t*>(s.pixels) + y * s.pitch + x * 4;
+  return {p[0], p[1], p[2], p[3]};
+}
+
+bool near(const Rgba& a, const Rgba& b, int tol = 3) {
+  return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
+}
+
+std::string str(const Rgba& c) {
+  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + ")";
+}
+
+bool samePixels(const SDL_Surface& a, const SDL_Surface& b) {
+  if (a.w != b.w || a.h != b.h) return false;
+  for (int y = 0; y < a.h; ++y) {
+    if (std::memcmp(static_cast<const char*>(a.pixels) + y * a.pitch,
+                    static_cast<const char*>(b.pixels) + y * b.pitch,
+                    static_cast<std::size_t>(a.w) * 4) != 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(RenderCommand, SceneFrameZeroHasThePlayerAtTheCentreAndParkedCarsInTheirColour) {
+  const fs::path out = scratch("lot.png");
+  const CommandResult run = render("'" + kLot + "' --out '" + out.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const Surface img = loadRgba(out);
+  ASSERT_TRUE(img) << IMG_GetError();
+  EXPECT_EQ(img->w, 1280);
+  EXPECT_EQ(img->h, 720);
+  const Palette palette;
+  EXPECT_TRUE(near(pixel(*img, 640, 360), palette.player)) << str(pixel(*img, 640, 360));
+
+  // Every parked car whose centre is clear of the HUD panels shows the parked colour there.
+  const Parsed<Scene> scene = loadScene(kLot);
+  ASSERT_TRUE(scene.ok());
+  const Obb2 player =
+      Obb2::fromDegrees(scene.value().player.position, scene.value().player.heading_deg,
+                        scene.value().player.length, scene.value().player.width);
+  const Camera camera = followCamera(player, 12.0, {1280, 720});
+  int checked = 0;
+  for (const ParkedCar& car : scene.value().parked) {
+    const Eigen::Vector2f s = camera.toScreen(car.box.center);
+    if (s.x() < 320 || s.x() > 1100 || s.y() < 160 || s.y() > 640) continue;
+    const Rgba c = pixel(*img, static_cast<int>(s.x()), static_cast<int>(s.y()));
+    EXPECT_TRUE(near(c, palette.parked)) << car.id << " " << str(c);
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+  EXPECT_FALSE(fs::exists(out.string() + ".tmp"));
+}
+
+TEST(RenderCommand, SizeAndZoomOptions) {
+  const fs::path out = scratch("small.png");
+  const CommandResult run =
+      render("'" + kLot + "' --width 320 --height 200 --zoom 30 --out '" + out.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const Surface img = loadRgba(out);
+  ASSERT_TRUE(img);
+  EXPECT_EQ(img->w, 320);
+  EXPECT_EQ(img->h, 200);
+  EXPECT_TRUE(near(pixel(*img, 160, 100), Palette{}.player)) << str(pixel(*img, 160, 100));
+}
+
+TEST(RenderCommand, ReplayFramesDifferAndThePlayerStaysAtTheCentre) {
+  const fs::path first = scratch("head-on-0.png");
+  const fs::path mid = scratch("head-on-800.png");
+  const fs::path last = scratch("head-on-last.png");
+  ASSERT_EQ(render("'" + kHeadOn + "' --frame 0 --out '" + first.string() + "'").status, 0);
+  ASSERT_EQ(render("'" + kHeadOn + "' --frame 800 --out '" + mid.string() + "'").status, 0);
+  const CommandResult run = render("'" + kHeadOn + "' --out '" + last.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const Surface a = loadRgba(first);
+  const Surface b = loadRgba(mid);
+  const Surface c = loadRgba(last);
+  ASSERT_TRUE(a && b && c);
+  EXPECT_FALSE(samePixels(*a, *b));
+  EXPECT_FALSE(samePixels(*b, *c));
+  for (const Surface* s : {&a, &b, &c}) {
+    EXPECT_TRUE(near(pixel(**s, 640, 360), Palette{}.player)) << str(pixel(**s, 640, 360));
+  }
+}
+
+TEST(RenderCommand, DebugOverlayChangesTheImage) {
+  const fs::path plain = scratch("plain.png");
+  const fs::path debug = scratch("debug.png");
+  ASSERT_EQ(render("'" + kHeadOn + "' --frame 849 --out '" + plain.string() + "'").status, 0);
+  const CommandResult run =
+      render("'" + kHeadOn + "' --frame 849 --debug --out '" + debug.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const Surface a = loadRgba(plain);
+  const Surface b = loadRgba(debug);
+  ASSERT_TRUE(a && b);
+  EXPECT_FALSE(samePixels(*a, *b));
+}
+
+TEST(RenderCommand, MissingInputIsExit2WithTheFileName) {
+  const CommandResult run = render("/no/such/scene.json --out '" + scratch("x.png").string() + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("/no/such/scene.json"), std::string::npos) << run.err;
+}
+
+TEST(RenderCommand, FrameBeyondTheEndOfAReplayIsExit2) {
+  const fs::path out = scratch("beyond.png");
+  fs::remove(out);
+  const CommandResult run = render("'" + kHeadOn + "' --frame 1741 --out '" + out.string() + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("beyond the end"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(render("'" + kHeadOn + "' --frame 1740 --out '" + out.string() + "'").status, 0);
+}
+
+TEST(RenderCommand, BadSceneIsExit2WithFileAndLine) {
+  const fs::path bad = scratch("bad.json");
+  std::ofstream(bad) << "{\n  \"format\": \"cardemo-scene/1\",\n  \"colour\": 3\n}\n";
+  const CommandResult run =
+      render("'" + bad.string() + "' --out '" + scratch("bad.png").string() + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err.rfind(bad.string() + ":", 0), 0u) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}
+
+TEST(RenderCommand, BadReplayLineIsExit2WithFileAndLine) {
+  const fs::path bad = scratch("bad.replay");
+  std::ofstream(bad) << "cardemo-replay 1\nscene " << kLot << "\n10 X\n";
+  const CommandResult run =
+      render("'" + bad.string() + "' --out '" + scratch("bad.png").string() + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err.rfind(bad.string() + ":3:", 0), 0u) << run.err;
+}
+
+TEST(RenderCommand, UnwritableOutputIsExit2) {
+  const CommandResult run = render("'" + kLot + "' --out /no/such/dir/out.png");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("/no/such/dir/out.png"), std::string::npos) << run.err;
+}
+
+TEST(RenderCommand, MissingOutIsAUsageError) {
+  EXPECT_EQ(render("'" + kLot + "'").status, 2);
+}
+
+}  // namespace
+}  // namespace cardemo

@@ -1,0 +1,296 @@
+// Drawing through a recording canvas: what is drawn where, in which colour, with no SDL.
+
+#include "render/draw_world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "../sim/scene_builders.hpp"
+#include "recording_canvas.hpp"
+#include "render/debug_overlay.hpp"
+#include "render/hud.hpp"
+
+namespace cardemo {
+namespace {
+
+using test::parkedCar;
+using test::RecordingCanvas;
+using test::sceneWith;
+
+const Eigen::Vector2i kViewport{1280, 720};
+
+RecordingCanvas drawn(const World& world, const Camera& camera, const DrawOptions& options = {},
+                      const Obb2* player_box = nullptr) {
+  RecordingCanvas canvas(camera.viewport);
+  drawFrame(canvas, world, camera, player_box ? *player_box : world.carBox(), options);
+  return canvas;
+}
+
+TEST(DrawWorld, PlayerDrawnInItsColourAtTheProjectedBox) {
+  World world(sceneWith({parkedCar("A", 10, 0, 90)}, 3.0, -2.0, 30.0));
+  Camera camera;
+  camera.center = {1.0, 1.0};
+  camera.pixels_per_metre = 20.0;
+  const RecordingCanvas canvas = drawn(world, camera);
+  const auto player = canvas.fillsOf(Palette{}.player);
+  ASSERT_EQ(player.size(), 1u);
+  ASSERT_EQ(player[0].points.size(), 4u);
+  const auto corners = world.carBox().corners();
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_LT((player[0].points[i] - camera.toScreen(corners[i])).norm(), 1e-3f);
+  }
+}
+
+TEST(DrawWorld, FollowCameraPutsThePlayerAtTheScreenCentre) {
+  World world(sceneWith({}, 123.0, -45.0, 70.0));
+  const Camera camera = followCamera(world.carBox(), 15.0, kViewport);
+  const auto player = drawn(world, camera).fillsOf(Palette{}.player);
+  ASSERT_EQ(player.size(), 1u);
+  EXPECT_LT((player[0].centroid() - Eigen::Vector2f{640.0f, 360.0f}).norm(), 1e-3f);
+}
+
+TEST(DrawWorld, InterpolatedPlayerBoxIsTheOneDrawn) {
+  World world(sceneWith({}));
+  const Obb2 between = Obb2::fromDegrees({0.5, 0.25}, 10.0, 4.5, 1.8);
+  Camera camera;
+  camera.viewport = kViewport;
+  const auto player = drawn(world, camera, {}, &between).fillsOf(Palette{}.player);
+  ASSERT_EQ(player.size(), 1u);
+  EXPECT_LT((player[0].centroid() - camera.toScreen(between.center)).norm(), 1e-3f);
+}
+
+TEST(DrawWorld, ParkedCarsInViewDrawnInTheParkedColourWithWindscreens) {
+  World world(sceneWith(
+      {parkedCar("A", 10, 0, 90), parkedCar("B", -12, 6, 0), parkedCar("far", 5000, 0, 0)}));
+  Camera camera;
+  camera.viewport = kViewport;
+  const RecordingCanvas canvas = drawn(world, camera);
+  const auto parked = canvas.fillsOf(Palette{}.parked);
+  ASSERT_EQ(parked.size(), 2u);  // the far one is culled
+  EXPECT_LT((parked[0].centroid() - camera.toScreen({10.0, 0.0})).norm(), 1e-3f);
+  EXPECT_LT((parked[1].centroid() - camera.toScreen({-12.0, 6.0})).norm(), 1e-3f);
+  // One windscreen per car drawn (two parked + the player).
+  EXPECT_EQ(canvas.fillsOf(Palette{}.windscreen).size(), 3u);
+}
+
+TEST(DrawWorld, WindscreenSitsTowardsTheHeading) {
+  for (double heading : {0.0, 90.0, 180.0, -45.0}) {
+    World world(sceneWith({}, 0.0, 0.0, heading));
+    Camera camera;
+    camera.viewport = kViewport;
+    camera.pixels_per_metre = 30.0;
+    const RecordingCanvas canvas = drawn(world, camera);
+    const auto glass = canvas.fillsOf(Palette{}.windscreen);
+    ASSERT_EQ(glass.size(), 1u);
+    const Eigen::Vector2f d = glass[0].centroid() - camera.toScreen({0.0, 0.0});
+    const double rad = heading * 3.14159265358979323846 / 180.0;
+    // Screen y points down, so the heading's y flips.
+    const Eigen::Vector2f expected{static_cast<float>(std::cos(rad)),
+                                   static_cast<float>(-std::sin(rad))};
+    EXPECT_GT(d.normalized().dot(expected), 0.99f) << "heading " << heading;
+  }
+}
+
+TEST(DrawWorld, ObstaclesAndWallsAreDrawn) {
+  Scene scene = sceneWith({});
+  scene.bounds = Aabb2{{-20.0, -10.0}, {20.0, 10.0}};
+  const std::array<Eigen::Vector2d, 3> tri{{{5, 5}, {8, 5}, {6, 8}}};
+  scene.obstacles.push_back({"kerb", *ConvexPolygon::fromPoints(tri)});
+  World world(std::move(scene));
+  Camera camera;
+  camera.viewport = kViewport;
+  const RecordingCanvas canvas = drawn(world, camera);
+  ASSERT_EQ(canvas.fillsOf(Palette{}.obstacle).size(), 1u);
+  EXPECT_EQ(canvas.fillsOf(Palette{}.obstacle)[0].points.size(), 3u);
+  EXPECT_EQ(canvas.fillsOf(Palette{}.wall).size(), 4u);
+  EXPECT_EQ(canvas.cleared, Palette{}.outside);
+  EXPECT_EQ(canvas.fillsOf(Palette{}.ground).size(), 1u);  // the lot inside the walls
+}
+
+TEST(DrawWorld, DebugOverlayAddsGreenAabbAndRedObbs) {
+  World world(sceneWith({parkedCar("A", 10, 0, 90), parkedCar("B", -10, 0, 90)}));
+  Camera camera;
+  camera.viewport = kViewport;
+  const OverlayPalette overlay;
+  const RecordingCanvas plain = drawn(world, camera);
+  EXPECT_EQ(plain.linesOf(overlay.aabb), 0u);
+  EXPECT_EQ(plain.linesOf(overlay.obb), 0u);
+  DrawOptions options;
+  options.debug_overlay = true;
+  const RecordingCanvas debug = drawn(world, camera, options);
+  EXPECT_EQ(debug.linesOf(overlay.aabb), 4u);
+  EXPECT_EQ(debug.linesOf(overlay.obb), 12u);  // two parked cars and the player
+  EXPECT_TRUE(debug.hasText("narrow-phase tests"));
+  EXPECT_TRUE(debug.hasText("candidates"));
+}
+
+TEST(DrawWorld, DebugOverlayHighlightsCandidatesAndContacts) {
+  // The player's front overlaps A at frame 0: A is a candidate and a contact.
+  World world(sceneWith({parkedCar("A", 3.0, 0, 90)}));
+  ASSERT_FALSE(world.candidates().empty());
+  ASSERT_FALSE(world.contacts().empty());
+  Camera camera;
+  camera.viewport = kViewport;
+  camera.pixels_per_metre = 30.0;
+  DrawOptions options;
+  options.debug_overlay = true;
+  const OverlayPalette overlay;
+  const RecordingCanvas canvas = drawn(world, camera, options);
+  EXPECT_EQ(canvas.linesOf(overlay.candidate), 4u);
+  // Each contact: a normal arrow and a minimum-translation arrow (shaft + filled head).
+  EXPECT_EQ(canvas.linesOf(overlay.normal), world.contacts().size());
+  EXPECT_EQ(canvas.linesOf(overlay.mtv), world.contacts().size());
+  // The normal points from the player (at the centre) towards A (screen +x).
+  for (const auto& l : canvas.lines) {
+    if (l.color == overlay.normal) {
+      EXPECT_GT(l.b.x(), l.a.x());
+    }
+    if (l.color == overlay.mtv) {
+      EXPECT_LT(l.b.x(), l.a.x());
+    }
+  }
+}
+
+TEST(DrawWorld, RotationProofBroadPhaseBoxIsTheOneShown) {
+  WorldSettings settings;
+  settings.broad_phase_box = BroadPhaseBox::kRotationProof;
+  World world(sceneWith({}, 0.0, 0.0, 30.0), settings);
+  const Aabb2 b = broadPhaseBox(world);
+  EXPECT_EQ(b, world.carBox().rotationProofAabb());
+  World tight(sceneWith({}, 0.0, 0.0, 30.0));
+  EXPECT_EQ(broadPhaseBox(tight), tight.carBox().aabb());
+}
+
+TEST(Camera, RoundTripNearAndFarFromTheOrigin) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> offset(-50.0, 50.0);
+  for (double far : {0.0, 1e5, 1e7, -1e7}) {
+    Camera camera;
+    camera.center = {far + 0.123, -far + 0.456};
+    camera.pixels_per_metre = 12.0;
+    for (int i = 0; i < 1000; ++i) {
+      const Eigen::Vector2d w = camera.center + Eigen::Vector2d{offset(rng), offset(rng)};
+      const Eigen::Vector2d back = camera.toWorld(camera.toScreen(w));
+      // A float pixel near 1e3 is good to ~1e-4 px, i.e. well under a millimetre here.
+      EXPECT_LT((back - w).norm(), 1e-4) << "at " << far;
+    }
+    EXPECT_LT((camera.toScreen(camera.center) - Eigen::Vector2f{640.0f, 360.0f}).norm(), 1e-4f);
+  }
+}
+
+TEST(Camera, ScreenYPointsDown) {
+  Camera camera;
+  EXPECT_LT(camera.toScreen({0.0, 1.0}).y(), camera.toScreen({0.0, 0.0}).y());
+  EXPECT_GT(camera.toScreen({1.0, 0.0}).x(), camera.toScreen({0.0, 0.0}).x());
+}
+
+TEST(DrawWorld, GridLinesLandOnWholeMetresFarFromTheOrigin) {
+  Scene scene = sceneWith({}, 1e7 + 0.37, -1e7 + 0.81, 0.0);
+  World world(std::move(scene));
+  const Camera camera = followCamera(world.carBox(), 20.0, kViewport);
+  const RecordingCanvas canvas = drawn(world, camera);
+  const Palette palette;
+  int vertical = 0;
+  for (const auto& l : canvas.lines) {
+    if (l.color != palette.grid || l.a.x() != l.b.x()) continue;
+    ++vertical;
+    const double x = camera.toWorld(l.a).x();
+    EXPECT_NEAR(x, std::round(x), 1e-4);
+  }
+  EXPECT_GT(vertical, 40);  // 64 m in view, minus the 10 m lines drawn brighter
+  EXPECT_LT(vertical, 80);
+  const auto player = canvas.fillsOf(palette.player);
+  ASSERT_EQ(player.size(), 1u);
+  EXPECT_LT((player[0].centroid() - Eigen::Vector2f{640.0f, 360.0f}).norm(), 1e-3f);
+}
+
+TEST(DrawWorld, ZoomedFarOutSkipsTheMinorGrid) {
+  World world(sceneWith({}));
+  const Camera camera = followCamera(world.carBox(), 1.0, kViewport);
+  const RecordingCanvas canvas = drawn(world, camera);
+  EXPECT_EQ(canvas.linesOf(Palette{}.grid), 0u);
+  EXPECT_GT(canvas.lines.size(), 100u);  // the 10 m lines (20 px apart) remain
+}
+
+TEST(Hud, HealthBarFillIsProportionalToHealth) {
+  for (int health : {100, 73, 25, 1}) {
+    RecordingCanvas canvas;
+    drawHealthBar(canvas, {10.0f, 10.0f}, {200.0f, 20.0f}, health, 100);
+    const auto fill = canvas.fillsOf(healthColor(health / 100.0));
+    ASSERT_EQ(fill.size(), 1u) << health;
+    EXPECT_NEAR(fill[0].width(), 2.0f * health, 1e-3f);
+    EXPECT_TRUE(canvas.hasText(std::to_string(health) + " / 100"));
+  }
+  RecordingCanvas empty;
+  drawHealthBar(empty, {10.0f, 10.0f}, {200.0f, 20.0f}, 0, 100);
+  EXPECT_EQ(empty.fills.size(), 1u);  // the trough only
+}
+
+TEST(Hud, HealthBarInTheFrameFollowsTheWorldsHealth) {
+  // Overlapping A at frame 0 is a hit at frame 0, so health starts below the maximum.
+  World world(sceneWith({parkedCar("A", 3.0, 0, 90)}));
+  ASSERT_LT(world.health(), 100);
+  Camera camera;
+  const RecordingCanvas canvas = drawn(world, camera);
+  const auto fill = canvas.fillsOf(healthColor(world.health() / 100.0));
+  ASSERT_EQ(fill.size(), 1u);
+  EXPECT_NEAR(fill[0].width(), 240.0f * hudScale(kViewport) * world.health() / 100.0f, 1e-2f);
+  EXPECT_LT(fill[0].centroid().x(), 300.0f);  // top left
+  EXPECT_LT(fill[0].centroid().y(), 80.0f);
+  EXPECT_TRUE(canvas.hasText("1"));  // one hit
+}
+
+TEST(Hud, HealthColourGoesFromRedToGreen) {
+  const Rgba full = healthColor(1.0);
+  const Rgba empty = healthColor(0.0);
+  EXPECT_GT(full.g, full.r);
+  EXPECT_GT(empty.r, empty.g);
+  EXPECT_EQ(healthColor(2.0), full);
+  EXPECT_EQ(healthColor(-1.0), empty);
+}
+
+TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
+  World world(sceneWith({}));
+  Camera camera;
+  EXPECT_FALSE(drawn(world, camera).hasText("FPS"));
+  EXPECT_FALSE(drawn(world, camera).hasText("PAUSED"));
+  DrawOptions options;
+  options.fps = 59.6;
+  options.playback_speed = 2.0;
+  options.paused = true;
+  options.status = "recording to drive.replay";
+  const RecordingCanvas canvas = drawn(world, camera, options);
+  for (const char* text :
+       {"km/h", "Hits", "Frame", "FPS", "60", "2x", "PAUSED", "recording to drive.replay"}) {
+    EXPECT_TRUE(canvas.hasText(text)) << text;
+  }
+}
+
+TEST(Hud, GameOverPanelAtZeroHealth) {
+  Scene scene = sceneWith({parkedCar("A", 3.0, 0, 90)});
+  scene.player.health = 1;
+  World world(std::move(scene));
+  ASSERT_TRUE(world.gameOver());
+  Camera camera;
+  EXPECT_TRUE(drawn(world, camera).hasText("GAME OVER"));
+  World alive(sceneWith({}));
+  EXPECT_FALSE(drawn(alive, camera).hasText("GAME OVER"));
+}
+
+TEST(Hud, HelpPanelListsEveryKey) {
+  World world(sceneWith({}));
+  Camera camera;
+  DrawOptions options;
+  options.help = true;
+  const RecordingCanvas canvas = drawn(world, camera, options);
+  for (const char* key : {"Up", "Down", "Left", "Right", "P", "N", "R", "B", "F1", "F12", "+", "-",
+                          "[", "]", "Esc"}) {
+    EXPECT_TRUE(canvas.hasText(key)) << key;
+  }
+  EXPECT_FALSE(drawn(world, camera).hasText("F12"));
+}
+
+}  // namespace
+}  // namespace cardemo
