@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
-# Builds cardemo and starts it on the bundled default scene.
-# Until the window lands (issue 3), this replays the bundled demo drive headless and prints its summary.
+# Builds cardemo and starts the game on the bundled parking lot.
+# With a display: the SDL2 window (arrow keys drive, F1 lists every key). Without one: the bundled
+# demo drive is replayed headless, its summary printed, and one frame is drawn to a PNG.
+# Extra arguments go to `cardemo play` (e.g. --record drive.replay).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/ensure-packages.sh" $(grep -v '^#' "$root/scripts/packages.txt")
 build="${CARDEMO_BUILD_DIR:-$root/build}"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_BUILD_TESTS=OFF >/dev/null
 cmake --build "$build" --target cardemo -j"$(nproc)"
-exec "$build/cardemo" replay "$root/assets/replays/demo.replay" "$@"
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  exec "$build/cardemo" play "$root/assets/scenes/parking-lot.json" "$@"
+fi
+echo "No display: replaying the demo drive headless instead of opening the window."
+"$build/cardemo" replay "$root/assets/replays/demo.replay"
+picture="$build/demo-frame.png"
+"$build/cardemo" render "$root/assets/replays/demo.replay" --frame 1472 --debug --out "$picture"
