@@ -26,6 +26,9 @@ void addCompareCommand(CLI::App& app, int& exit_code);
 
 /// `cardemo compare-sweep [--pairs N] [--seed S]`: random box pairs, disagreement tables.
 void addCompareSweepCommand(CLI::App& app, int& exit_code);
+
+/// `cardemo compare-world REPLAY [--scene S]`: the same replay as a Box2D b2World.
+void addCompareWorldCommand(CLI::App& app, int& exit_code);
 #endif
 
 }  // namespace cardemo::app

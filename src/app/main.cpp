@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
 #ifdef CARDEMO_HAVE_COMPARE
   cardemo::app::addCompareCommand(app, exit_code);
   cardemo::app::addCompareSweepCommand(app, exit_code);
+  cardemo::app::addCompareWorldCommand(app, exit_code);
 #endif
 #ifdef CARDEMO_HAVE_SDL
   cardemo::app::addPlayCommand(app, exit_code);
