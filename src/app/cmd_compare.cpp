@@ -53,8 +53,7 @@ int runCompareCommand(const CompareCommandOptions& options) {
       return 2;
     }
   }
-  // Only our own pipeline failing the exact oracle is a failed check; Box2D's are findings.
-  return report[compare::Verdict::kOurs].tally.disagree > 0 ? 1 : 0;
+  return compare::compareExitStatus(report);
 }
 
 }  // namespace

@@ -78,4 +78,8 @@ void FrameComparer::record(std::int64_t frame, std::uint32_t collider, const Pai
   }
 }
 
+int compareExitStatus(const CompareReport& report) {
+  return report[Verdict::kOurs].tally.disagree > 0 ? 1 : 0;
+}
+
 }  // namespace cardemo::compare

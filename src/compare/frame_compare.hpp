@@ -65,7 +65,16 @@ struct CompareReport {
   [[nodiscard]] const VerdictRecord& operator[](Verdict v) const {
     return verdicts[static_cast<std::size_t>(v)];
   }
+  /// Mutable record of one verdict.
+  [[nodiscard]] VerdictRecord& operator[](Verdict v) {
+    return verdicts[static_cast<std::size_t>(v)];
+  }
 };
+
+/// Exit status of `cardemo compare`: 1 when cardemo's verdict disagrees with the exact oracle
+/// outside the tolerance (a failed check), else 0; Box2D's disagreements are findings, not
+/// failures.
+[[nodiscard]] int compareExitStatus(const CompareReport& report);
 
 /// Checks one world's frames as they happen; construct at frame 0, call check() after each step.
 class FrameComparer {

@@ -115,5 +115,15 @@ TEST(ReplayCompare, BadInputIsAnError) {
   EXPECT_NE(c.error().toString().find("/nonexistent/x.replay"), std::string::npos);
 }
 
+TEST(ReplayCompare, ExitStatusFailsOnlyWhenCardemoDisagrees) {
+  CompareReport report;
+  EXPECT_EQ(compareExitStatus(report), 0);
+  report[Verdict::kBox2d].tally.disagree = 7;   // Box2D being wrong is a finding
+  report[Verdict::kOurs].tally.borderline = 3;  // within the contract's tolerance
+  EXPECT_EQ(compareExitStatus(report), 0);
+  report[Verdict::kOurs].tally.disagree = 1;
+  EXPECT_EQ(compareExitStatus(report), 1);
+}
+
 }  // namespace
 }  // namespace cardemo::compare
