@@ -9,43 +9,23 @@
 #include <fstream>
 #include <string>
 
+#include "../support/cli_run.hpp"
+
 namespace {
 
-struct CliResult {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+using cardemo::test::CliResult;
+using cardemo::test::slurp;
 
-// One folder per test process: CTest runs the tests of this file in parallel processes.
-const std::filesystem::path kTemp =
-    std::filesystem::temp_directory_path() / ("cardemo_cli_test." + std::to_string(::getpid()));
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-// Runs `cardemo ARGS` through the shell, capturing stdout, stderr and the exit status.
 CliResult cardemo(const std::string& args, const std::string& stdin_text = "") {
-  std::filesystem::create_directories(kTemp);
-  const auto in = kTemp / "stdin", out = kTemp / "stdout", err = kTemp / "stderr";
-  std::ofstream(in, std::ios::binary) << stdin_text;
-  const std::string command = std::string(CARDEMO_BINARY) + " " + args + " <" + in.string() + " >" +
-                              out.string() + " 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return cardemo::test::runCardemo(args, stdin_text);
 }
 
 std::string asset(const std::string& relative) {
-  return std::string(CARDEMO_SOURCE_DIR) + "/assets/" + relative;
+  return cardemo::test::assetPath(relative);
 }
 
 std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
-  std::filesystem::create_directories(kTemp);
-  const auto p = kTemp / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
+  return cardemo::test::writeScratch(name, text);
 }
 
 int countLines(const std::string& s) {
@@ -129,7 +109,7 @@ TEST(Cli, JsonSummaryHasTheContractFields) {
 }
 
 TEST(Cli, TraceHasOneRowPerFrame) {
-  const auto trace = kTemp / "trace.csv";
+  const auto trace = cardemo::test::scratchDir() / "trace.csv";
   std::filesystem::remove(trace);
   const auto replay =
       writeTemp("trace.replay",

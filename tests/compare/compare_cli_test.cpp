@@ -8,37 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../support/cli_run.hpp"
+
 namespace {
 
-struct CliResult {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+using cardemo::test::CliResult;
 
-const std::filesystem::path kTemp =
-    std::filesystem::temp_directory_path() / "cardemo_compare_cli_test";
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-// Per-test file names: ctest -j runs this binary's tests in parallel.
-std::filesystem::path tempFile(const std::string& suffix) {
-  return kTemp / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                  "." + suffix);
-}
-
-// Runs `cardemo ARGS` through the shell, capturing stdout, stderr and the exit status.
 CliResult cardemo(const std::string& args, const std::string& stdin_text = "") {
-  std::filesystem::create_directories(kTemp);
-  const auto in = tempFile("stdin"), out = tempFile("stdout"), err = tempFile("stderr");
-  std::ofstream(in, std::ios::binary) << stdin_text;
-  const std::string command = std::string(CARDEMO_BINARY) + " " + args + " <" + in.string() + " >" +
-                              out.string() + " 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return cardemo::test::runCardemo(args, stdin_text);
 }
 
 std::string replay(const std::string& name) {
@@ -46,10 +23,7 @@ std::string replay(const std::string& name) {
 }
 
 std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
-  std::filesystem::create_directories(kTemp);
-  const auto p = tempFile(name);
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
+  return cardemo::test::writeScratch(name, text);
 }
 
 TEST(CompareCli, HelpSucceeds) {
@@ -80,12 +54,12 @@ TEST(CompareCli, JsonHasTheContractFields) {
 }
 
 TEST(CompareCli, RadiusIsReported) {
-  const auto json = tempFile("out.json");
+  const auto json = cardemo::test::scratchDir() / "out.json";
   const CliResult r =
       cardemo("compare " + replay("demo.replay") + " --radius 8 --json " + json.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("within"), std::string::npos);
-  EXPECT_EQ(nlohmann::json::parse(slurp(json)).at("radius"), 8.0);
+  EXPECT_EQ(nlohmann::json::parse(cardemo::test::slurp(json)).at("radius"), 8.0);
 }
 
 TEST(CompareCli, BadInputExitsTwoWithFileAndLine) {

@@ -7,25 +7,14 @@
 #include <fstream>
 #include <string>
 
+#include "../support/cli_run.hpp"
+
 namespace {
 
-struct WorldRun {
-  int status = -1;
-  std::string out;
-};
+using WorldRun = cardemo::test::CliResult;
 
-// Runs `cardemo ARGS`, capturing stdout (stderr discarded) and the exit status.
 WorldRun cardemo(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path() / "cardemo_compare_world_cli_test";
-  std::filesystem::create_directories(dir);
-  const auto out =
-      dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".out");
-  const std::string command =
-      std::string(CARDEMO_BINARY) + " " + args + " >" + out.string() + " 2>/dev/null";
-  const int raw = std::system(command.c_str());
-  std::ifstream f(out, std::ios::binary);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
-          {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()}};
+  return cardemo::test::runCardemo(args);
 }
 
 TEST(CompareWorldCli, HeadOnReportsLagAndClamp) {
