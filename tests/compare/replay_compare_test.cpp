@@ -1,5 +1,5 @@
 // The comparison engine on every bundled replay: cardemo never disagrees with the exact oracle,
-// and Box2D's hit lists match the oracle's except where explained by borderline pairs.
+// and Box2D (skin 0) agrees with it outside the tolerance and on every hit, frame for frame.
 
 #include "compare/replay_compare.hpp"
 
