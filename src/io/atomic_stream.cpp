@@ -16,8 +16,9 @@ std::string failure(const std::string& what, const std::string& path) {
 
 // Makes a rename durable; best effort, the file itself is already complete and synced.
 void syncFolderOf(const std::string& path) {
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  if (dir.empty()) dir = ".";
+  // Built without assigning a literal: GCC 12 at -O3 warns falsely (-Wrestrict, GCC bug 105651).
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  const std::string dir = folder.empty() ? std::string(1, '.') : folder.string();
   if (const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); fd >= 0) {
     ::fsync(fd);
     ::close(fd);

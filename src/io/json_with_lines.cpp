@@ -177,7 +177,10 @@ class TreeBuilder {
       if (f.node->kind == Node::Kind::kArray) {
         const std::size_t n = f.node->items.size();
         if (!innermost && n == 0) break;
-        out += "[" + std::to_string(innermost ? n : n - 1) + "]";
+        // Appended piecewise: `"[" + std::string` makes GCC 12 at -O3 warn falsely (bug 105651).
+        out += '[';
+        out += std::to_string(innermost ? n : n - 1);
+        out += ']';
       } else {
         if (innermost && !f.has_pending_key) break;
         if (!innermost && f.node->members.empty()) break;

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Determinism across builds: builds `cardemo` alone with each compiler and build type below, replays
+# every golden replay in each, and prints the final state hash of each replay per build. It fails unless
+# every build gives every replay's expected hash (the replays' `expect hash` lines), i.e. unless all
+# builds agree bit for bit.
+#
+# Usage: scripts/check-determinism.sh [BUILD_ROOT]   (default: build-determinism/ in the repo)
+# The RelWithDebInfo/GCC tree and the clang ASan+UBSan tree are checked by their own CTest runs
+# (the golden.* tests), so together CI covers GCC and Clang x Debug, Release, RelWithDebInfo and
+# the sanitizers.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out="${1:-$root/build-determinism}"
+jobs=$(nproc)
+builds=("gcc:Debug:g++" "gcc:Release:g++" "clang:Release:clang++")
+
+replays=("$root"/assets/replays/*.replay)
+declare -A hashes
+failed=0
+for spec in "${builds[@]}"; do
+  IFS=: read -r compiler type cxx <<<"$spec"
+  dir="$out/$compiler-$type"
+  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" -DCMAKE_CXX_COMPILER="$cxx" \
+    -DCARDEMO_WERROR=ON -DCARDEMO_BUILD_TESTS=OFF -DCARDEMO_BUILD_BENCH=OFF >/dev/null
+  cmake --build "$dir" --target cardemo -j"$jobs" >/dev/null
+  for replay in "${replays[@]}"; do
+    name=$(basename "$replay" .replay)
+    summary=$("$dir/cardemo" replay "$replay" --json - 2>/dev/null) && status=0 || status=$?
+    hash=$(printf '%s' "$summary" | sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p')
+    hashes["$name,$compiler-$type"]="${hash:-none}"
+    if [ "$status" -ne 0 ]; then
+      echo "determinism: $compiler $type: $name does not meet its expectations" >&2
+      failed=$((failed + 1))
+    fi
+  done
+done
+
+printf '%-12s' replay
+for spec in "${builds[@]}"; do IFS=: read -r c t _ <<<"$spec"; printf ' %-18s' "$c-$t"; done
+echo
+for replay in "${replays[@]}"; do
+  name=$(basename "$replay" .replay)
+  printf '%-12s' "$name"
+  for spec in "${builds[@]}"; do
+    IFS=: read -r c t _ <<<"$spec"
+    printf ' %-18s' "${hashes["$name,$c-$t"]}"
+  done
+  echo
+done
+echo "determinism: ${#builds[@]} builds x ${#replays[@]} replays, $failed mismatches"
+[ "$failed" -eq 0 ]
