@@ -21,3 +21,6 @@ for replay in "$root"/assets/replays/*.replay; do
 done
 echo "debug-replays: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
+
+# Sanitizers (ASan+UBSan, clang) over the whole suite, then every fuzz target for 60 s.
+"$root/scripts/ci-sanitize.sh"
