@@ -151,7 +151,8 @@ class ShapeDecoder2 {
 
   /// Half extent: 5 mm to 50 m (sizes 1 cm to 100 m), often exactly at an end.
   double half() {
-    if (wild_) return in_.logRange(4.9406564584124654e-324, 5e8);
+    // Wild: down to the smallest denormal; a parsed size of 5e-324 m halves to exactly 0.
+    if (wild_) return in_.pick(16) == 0 ? 0.0 : in_.logRange(4.9406564584124654e-324, 5e8);
     switch (in_.pick(4)) {
       case 0:
         return 0.005;
