@@ -15,4 +15,7 @@ ctest --test-dir "$build" --output-on-failure -j"$jobs" ${CARDEMO_CTEST_ARGS:-}
 
 stage "Determinism: golden hashes with GCC Debug, GCC Release, Clang Release"
 "$root/scripts/check-determinism.sh" "$build-determinism"
+
+stage "Clang ASan+UBSan: every CTest test, then every fuzz target for 60 s"
+"$root/scripts/ci-sanitize.sh"
 stage "done"

@@ -8,7 +8,7 @@ namespace cardemo {
 
 Obb3 Obb3::fromQuaternion(const Eigen::Vector3d& center, const Eigen::Quaterniond& q,
                           const Eigen::Vector3d& size) {
-  const Eigen::Vector4d raw = q.coeffs();  // (x, y, z, w)
+  const Eigen::Vector4d& raw = q.coeffs();  // (x, y, z, w)
   assert(raw.allFinite());
   const double scale = raw.cwiseAbs().maxCoeff();
   assert(scale > 0.0);
