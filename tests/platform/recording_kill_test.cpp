@@ -122,7 +122,7 @@ TEST(RecordingKill, RandomMomentsLoseAtMostTheLastSecond) {
         {"--replay", (dir / "known.replay").string(), "--record", record.string(), "--progress"},
         progress, log);
     ASSERT_GT(pid, 0);
-    // Kill at a random moment 0.05..2.5 s after the first frame (before and after the first
+    // Kill at a random moment 0.05..2.2 s after the first frame (before and after the first
     // once-a-second flushes).
     const auto started = std::chrono::steady_clock::now();
     while (lastProgress(progress) < 1 && std::chrono::steady_clock::now() - started < 15s) {
@@ -130,7 +130,7 @@ TEST(RecordingKill, RandomMomentsLoseAtMostTheLastSecond) {
     }
     ASSERT_GE(lastProgress(progress), 1) << "the game did not start: " << slurp(log);
     std::this_thread::sleep_for(
-        std::chrono::milliseconds(std::uniform_int_distribution<int>(50, 2500)(rng)));
+        std::chrono::milliseconds(std::uniform_int_distribution<int>(50, 2200)(rng)));
     ASSERT_EQ(kill(pid, sig), 0);
     const int status = waitGame(pid, 10s);
     // Frames stepped: every one is printed after it is recorded; a SIGKILL may land between the
