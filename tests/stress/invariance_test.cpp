@@ -10,6 +10,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "drives.hpp"
@@ -45,17 +46,38 @@ std::vector<Drive> replayDrives() {
   return out;
 }
 
-// Seeded random drives on every bundled scene, `per_scene` each, of `frames` frames at 120 Hz.
+// The parking lot with every parked car turned by a seeded random angle within +-10 degrees about
+// its centre: boxes that are not axis-aligned, so that contacts have skewed normals.
+Scene jitteredLot(std::uint64_t seed) {
+  Parsed<Scene> scene = loadScene(assetPath("scenes/parking-lot.json"));
+  EXPECT_TRUE(scene.ok()) << scene.error().toString();
+  Scene s = std::move(scene).value();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> turn(-10.0, 10.0);
+  for (ParkedCar& p : s.parked) {
+    p.heading_deg += turn(rng);
+    p.box =
+        Obb2::fromDegrees(p.box.center, p.heading_deg, 2.0 * p.box.half.x(), 2.0 * p.box.half.y());
+  }
+  s.name = "jittered lot";
+  return s;
+}
+
+// Seeded random drives on every bundled scene and on a jittered lot, `per_scene` each, of
+// `frames` frames at 120 Hz.
 std::vector<Drive> randomDrives(int per_scene, std::int64_t frames, std::uint64_t seed) {
-  std::vector<Drive> out;
+  std::vector<std::pair<std::string, Scene>> scenes;
   for (const char* file : {"parking-lot", "street", "garage", "runway", "large-lot"}) {
     Parsed<Scene> scene = loadScene(assetPath(std::string("scenes/") + file + ".json"));
     EXPECT_TRUE(scene.ok()) << scene.error().toString();
+    scenes.emplace_back(file, std::move(scene).value());
+  }
+  scenes.emplace_back("jittered lot", jitteredLot(seed));
+  std::vector<Drive> out;
+  for (const auto& [name, scene] : scenes) {
     for (int k = 0; k < per_scene; ++k, ++seed) {
-      out.push_back({std::string(file) + " drive " + std::to_string(seed),
-                     scene.value(),
-                     {},
-                     randomDrive(seed, frames)});
+      out.push_back(
+          {name + " drive " + std::to_string(seed), scene, {}, randomDrive(seed, frames)});
     }
   }
   return out;
