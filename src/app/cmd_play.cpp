@@ -12,6 +12,7 @@
 #include "io/replay_runner.hpp"
 #include "io/scene_json.hpp"
 #include "platform/game_window.hpp"
+#include "play/recorder.hpp"
 
 namespace cardemo::app {
 namespace {
@@ -24,6 +25,7 @@ struct PlayOptions {
   std::string replay_path;
   std::string json_path;
   int hz = 120;
+  bool progress = false;
 };
 
 constexpr const char* kDefaultScene = "scenes/parking-lot.json";
@@ -65,8 +67,16 @@ int runPlayCommand(const PlayOptions& options) {
     std::fprintf(stderr, "cardemo play: --hz must be 1..10000\n");
     return 2;
   }
+  if (!options.record_path.empty()) {
+    // Before any window: a recording left by a killed game is kept and pointed at, not replaced.
+    if (const std::string why = leftoverRecording(options.record_path); !why.empty()) {
+      std::fprintf(stderr, "%s\n", why.c_str());
+      return 2;
+    }
+  }
   GameWindowOptions window;
   window.json_path = options.json_path;
+  window.progress = options.progress;
   window.replay_path = options.replay_path;
   SessionConfig& session = window.session;
   session.settings.hz = options.hz;
@@ -123,6 +133,9 @@ void addPlayCommand(CLI::App& app, int& exit_code) {
                   "Play a replay's inputs first; the keyboard takes over when it ends");
   sub->add_option("--json", options->json_path,
                   "Write the summary JSON to FILE when the game ends");
+  sub->add_flag("--progress", options->progress,
+                "Print each simulated frame's number on standard output as it is stepped (for "
+                "scripts and tests)");
   sub->add_option("--hz", options->hz,
                   "Fixed simulation rate in steps per second (default 120; a replay uses its own)");
   sub->callback([options, &exit_code] { exit_code = runPlayCommand(*options); });

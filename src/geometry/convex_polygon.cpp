@@ -1,9 +1,12 @@
 #include "geometry/convex_polygon.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <utility>
+
+#include "geometry/finite.hpp"
 
 namespace cardemo {
 namespace {
@@ -74,9 +77,10 @@ Interval project(const LocalShape& s, const Eigen::Vector2d& axis) {
   return r;
 }
 
-// Tests the axes of `owner` against both shapes, keeping the largest normalised gap in `best`.
+// Tests the axes of `owner` against both shapes, keeping the largest normalised gap in `best`;
+// `finite` turns false when a gap overflowed or an axis length underflowed to zero.
 void testAxes(const LocalShape& owner, const LocalShape& a, const LocalShape& b, SatResult2& best,
-              bool& first) {
+              bool& first, bool& finite) {
   for (int i = 0; i < owner.axis_count; ++i) {
     const Eigen::Vector2d& n = owner.axes[static_cast<std::size_t>(i)];
     const Interval pa = project(a, n);
@@ -86,6 +90,7 @@ void testAxes(const LocalShape& owner, const LocalShape& a, const LocalShape& b,
     const double backward = pa.lo - pb.hi;
     const double length = n.norm();
     const double gap = std::max(forward, backward) / length;
+    finite = finite && std::isfinite(gap);
     if (first || gap > best.separation) {
       first = false;
       best.separation = gap;
@@ -94,13 +99,60 @@ void testAxes(const LocalShape& owner, const LocalShape& a, const LocalShape& b,
   }
 }
 
-SatResult2 collideLocal(const LocalShape& a, const LocalShape& b) {
+SatResult2 collideScaled(const LocalShape& a, const LocalShape& b, bool& finite) {
   SatResult2 best;
   bool first = true;
-  testAxes(a, a, b, best, first);
-  testAxes(b, a, b, best, first);
+  testAxes(a, a, b, best, first, finite);
+  testAxes(b, a, b, best, first, finite);
   best.hit = best.separation <= 0.0;
   return best;
+}
+
+// The shape scaled by 2^-k (exact, bar underflow below the largest coordinate's 2^-1022), with
+// every axis scaled to unit order on its own (a gap divided by its axis length does not depend on
+// that length) and zero axes dropped (a zero edge has no normal; fewer axes can only report
+// overlap, never a false gap).
+LocalShape scaledDown(const LocalShape& s, int k) {
+  LocalShape out;
+  out.point_count = s.point_count;
+  for (int i = 0; i < s.point_count; ++i) {
+    const auto j = static_cast<std::size_t>(i);
+    out.points[j] = {std::scalbn(s.points[j].x(), -k), std::scalbn(s.points[j].y(), -k)};
+  }
+  for (int i = 0; i < s.axis_count; ++i) {
+    const Eigen::Vector2d& n = s.axes[static_cast<std::size_t>(i)];
+    const double m = n.cwiseAbs().maxCoeff();
+    if (!(m > 0.0)) continue;
+    const int e = std::ilogb(m);
+    out.axes[static_cast<std::size_t>(out.axis_count++)] = {std::scalbn(n.x(), -e),
+                                                            std::scalbn(n.y(), -e)};
+  }
+  return out;
+}
+
+double largestCoordinate(const LocalShape& s) {
+  double m = 0.0;
+  for (int i = 0; i < s.point_count; ++i) {
+    m = std::max(m, s.points[static_cast<std::size_t>(i)].cwiseAbs().maxCoeff());
+  }
+  return m;
+}
+
+SatResult2 collideLocal(const LocalShape& a, const LocalShape& b) {
+  bool finite = true;
+  SatResult2 r = collideScaled(a, b, finite);
+  if (!finite) {
+    // Coordinates beyond ~1e154 square past DBL_MAX in the projections, and edges shorter than
+    // ~1e-154 have a zero squared length: the same SAT on the shapes brought to unit order by a
+    // power of two, then the separation scaled back (exact in both directions).
+    const double largest = std::max(largestCoordinate(a), largestCoordinate(b));
+    const int k = largest > 0.0 ? std::ilogb(largest) : 0;
+    finite = true;
+    r = collideScaled(scaledDown(a, k), scaledDown(b, k), finite);
+    r.separation = std::scalbn(r.separation, k);
+  }
+  assert(isFinite(r));
+  return r;
 }
 
 }  // namespace
@@ -209,16 +261,19 @@ Eigen::Vector2d ConvexPolygon::centroid() const {
 }
 
 SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
+  assert(inDomain(a) && inDomain(b));
   const Eigen::Vector2d& ref = a.vertex(0);
   return collideLocal(localPolygon(a, ref), localPolygon(b, ref));
 }
 
 SatResult2 collidePolygonObb(const ConvexPolygon& a, const Obb2& b) {
+  assert(inDomain(a) && inDomain(b));
   const Eigen::Vector2d& ref = a.vertex(0);
   return collideLocal(localPolygon(a, ref), localBox(b, ref));
 }
 
 SatResult2 collideObbPolygon(const Obb2& a, const ConvexPolygon& b) {
+  assert(inDomain(a) && inDomain(b));
   const Eigen::Vector2d& ref = a.center;
   return collideLocal(localBox(a, ref), localPolygon(b, ref));
 }

@@ -1,7 +1,10 @@
 #include "geometry/manifold2.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+
+#include "geometry/finite.hpp"
 
 // Reference face / incident edge / clipping after Erin Catto, "Contact Manifolds" (GDC 2007) and
 // Box2D's b2CollidePolygons (v2.x); clipping is Sutherland-Hodgman against the reference face's
@@ -101,6 +104,7 @@ bool clipSegment(std::array<ClipVertex, 2>& seg, const Eigen::Vector2d& n, doubl
 
 Manifold2 manifoldObb2(const Obb2& a, const Obb2& b, const ManifoldSettings& settings,
                        int previous_reference_face) {
+  assert(inDomain(a) && inDomain(b));
   const LocalPair ab = localPair(a, b);
   const LocalPair ba = localPair(b, a);
   std::array<double, 8> seps{};
@@ -154,6 +158,8 @@ Manifold2 manifoldObb2(const Obb2& a, const Obb2& b, const ManifoldSettings& set
     m.points[static_cast<std::size_t>(m.count)] = {toWorld(on_b), s, 8 * ref.face + cv.id};
     ++m.count;
   }
+  assert(m.normal.allFinite() && (m.count < 1 || m.points[0].point.allFinite()) &&
+         (m.count < 2 || m.points[1].point.allFinite()));
   return m;
 }
 

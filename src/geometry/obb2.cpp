@@ -24,7 +24,8 @@ Aabb2 Obb2::aabb() const {
 }
 
 Aabb2 Obb2::rotationProofAabb() const {
-  const double radius = half.norm();
+  // hypot, not norm(): squaring a half extent beyond 1e154 would overflow.
+  const double radius = std::hypot(half.x(), half.y());
   const Eigen::Vector2d r{radius, radius};
   return {center - r, center + r};
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/finite.hpp"
+
 namespace cardemo {
 
 Obb3 Obb3::fromQuaternion(const Eigen::Vector3d& center, const Eigen::Quaterniond& q,
@@ -112,6 +114,7 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
 }  // namespace
 
 SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
+  assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
   r.separation = faceGap(a, b, p, 0);
@@ -140,10 +143,12 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     }
   }
   r.hit = r.separation <= 0.0;
+  assert(isFinite(r));
   return r;
 }
 
 bool overlapObb3(const Obb3& a, const Obb3& b) {
+  assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
   for (int k = 0; k < 6; ++k) {
     if (faceGap(a, b, p, k) > 0.0) return false;

@@ -1,6 +1,9 @@
 #include "geometry/sat_obb2.hpp"
 
+#include <cassert>
 #include <cmath>
+
+#include "geometry/finite.hpp"
 
 namespace cardemo {
 namespace {
@@ -25,6 +28,7 @@ RelativePose2 relativePose(const Obb2& a, const Obb2& b) {
 }  // namespace
 
 bool overlapObb2(const Obb2& a, const Obb2& b) {
+  assert(inDomain(a) && inDomain(b));
   const RelativePose2 p = relativePose(a, b);
   const double ac = std::abs(p.c), as = std::abs(p.s);
   // A's axes: B's projected radius is |R| * hB (Gottschalk et al., OBBTree, 1996).
@@ -39,6 +43,7 @@ bool overlapObb2(const Obb2& a, const Obb2& b) {
 }
 
 SatResult2 collideObb2(const Obb2& a, const Obb2& b) {
+  assert(inDomain(a) && inDomain(b));
   const RelativePose2 p = relativePose(a, b);
   const double ac = std::abs(p.c), as = std::abs(p.s);
   const double tbx = p.c * p.t.x() + p.s * p.t.y();
@@ -57,7 +62,9 @@ SatResult2 collideObb2(const Obb2& a, const Obb2& b) {
   const Eigen::Vector2d axes[4] = {a.axis, a.perp(), b.axis, b.perp()};
   const double along[4] = {p.t.x(), p.t.y(), tbx, tby};
   const Eigen::Vector2d normal = along[best] < 0.0 ? Eigen::Vector2d(-axes[best]) : axes[best];
-  return {gaps[best] <= 0.0, gaps[best], normal};
+  const SatResult2 r{gaps[best] <= 0.0, gaps[best], normal};
+  assert(isFinite(r));
+  return r;
 }
 
 }  // namespace cardemo

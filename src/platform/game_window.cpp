@@ -1,6 +1,7 @@
 #include "platform/game_window.hpp"
 
 #include <SDL.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <csignal>
@@ -27,13 +28,26 @@ extern "C" void onStopSignal(int sig) {
   g_stop_signal = sig;
 }
 
-// SIGINT/SIGTERM only set a flag; the loop then exits normally and finishes the recording.
-void installStopHandlers() {
+// SIGINT, SIGTERM and SIGHUP (terminal closed) only set a flag; the loop then exits normally,
+// finishes the recording and writes the summary. SA_RESETHAND: a second signal of the same kind
+// kills at once, which loses at most the last second of the recording (it is flushed every
+// second). A full disk or a file-size limit must be an error on write, not SIGXFSZ; a closed
+// standard output (--progress into a pipe) must not kill the game with SIGPIPE.
+void installSignalHandlers() {
   struct sigaction action {};
   action.sa_handler = onStopSignal;
+  action.sa_flags = SA_RESETHAND;
   sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
+  std::signal(SIGXFSZ, SIG_IGN);
+  std::signal(SIGPIPE, SIG_IGN);
+}
+
+// One line per simulated frame on standard output (--progress), written at once.
+void printFrame(std::int64_t frame) {
+  char line[32];
+  const int n = std::snprintf(line, sizeof line, "%lld\n", static_cast<long long>(frame));
+  if (n > 0) (void)::write(STDOUT_FILENO, line, static_cast<std::size_t>(n));
 }
 
 constexpr int kMaxStepsPerFrame = 8;
@@ -192,6 +206,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
   LoopState s;
   std::string note;
   bool over_reported = false;
+  bool record_error_reported = false;
   int status = 0;
   Uint64 last = SDL_GetPerformanceCounter();
   const double ticks_per_second = static_cast<double>(SDL_GetPerformanceFrequency());
@@ -215,12 +230,25 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     int steps = s.paused ? 0 : clock.advance(elapsed, s.speed);
     if (s.paused && s.step_once) steps = 1;
     s.step_once = false;
-    for (int i = 0; i < steps; ++i) session.step(latch.sample());
+    for (int i = 0; i < steps; ++i) {
+      session.step(latch.sample());
+      if (options.progress) printFrame(session.world().frame());
+    }
+    if (!record_error_reported && !session.recordError().empty()) {
+      // Say so at once (disk full, file too large): the game goes on, the recording does not.
+      record_error_reported = true;
+      std::fprintf(stderr, "%s\n", session.recordError().c_str());
+      note = "recording failed: see the terminal";
+      status = 2;
+    }
     if (session.world().gameOver() && !over_reported) {
       over_reported = true;
       status = std::max(status, writeSummary(json_path, session.world()));
-      if (!session.recordError().empty())
+      if (!record_error_reported && !session.recordError().empty()) {
+        record_error_reported = true;
         std::fprintf(stderr, "%s\n", session.recordError().c_str());
+        status = 2;
+      }
     }
 
     const bool frozen = s.paused || session.world().gameOver();
@@ -243,7 +271,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
   }
 
   if (std::string why = session.finishRecording(); !why.empty()) {
-    std::fprintf(stderr, "%s\n", why.c_str());
+    if (!record_error_reported) std::fprintf(stderr, "%s\n", why.c_str());
     status = 2;
   }
   return std::max(status, writeSummary(json_path, session.world()));
@@ -254,7 +282,10 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
 bool displayAvailable() {
   const char* x11 = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
+  // An explicit SDL video driver (offscreen, dummy, kmsdrm) needs no display server.
+  const char* driver = std::getenv("SDL_VIDEODRIVER");
+  return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0') ||
+         (driver != nullptr && *driver != '\0');
 }
 
 int runGameWindow(GameWindowOptions options) {
@@ -267,7 +298,7 @@ int runGameWindow(GameWindowOptions options) {
                  SDL_GetError());
     return 1;
   }
-  installStopHandlers();
+  installSignalHandlers();
   const std::string title = "cardemo \xE2\x80\x94 " + options.session.scene.name;
   std::unique_ptr<SDL_Window, SdlDeleter> window(
       SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, 1280, 720,

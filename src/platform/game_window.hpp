@@ -12,13 +12,16 @@ struct GameWindowOptions {
   SessionConfig session;    ///< Scene, rate, playback and recording.
   std::string json_path;    ///< Summary JSON written when the game ends (empty: none).
   std::string replay_path;  ///< The replay being played, for the status line (may be empty).
+  bool progress = false;    ///< Print each simulated frame's number on standard output.
 };
 
-/// True when an X11 or Wayland display is named in the environment.
+/// True when an X11 or Wayland display is named in the environment, or SDL_VIDEODRIVER names a
+/// driver (such as `offscreen`, which needs no display).
 [[nodiscard]] bool displayAvailable();
 
-/// Opens the window and runs the game until Esc, window close, SIGINT or SIGTERM. Returns the exit
-/// status: 0 normally, 1 when no display can be opened, 2 when an output cannot be written.
+/// Opens the window and runs the game until Esc, window close, SIGINT, SIGTERM or SIGHUP, then
+/// finishes the recording and writes the summary. Returns the exit status: 0 normally, 1 when no
+/// display can be opened, 2 when an output cannot be written.
 [[nodiscard]] int runGameWindow(GameWindowOptions options);
 
 }  // namespace cardemo

@@ -1,9 +1,15 @@
-// Recorder: merged runs, periodic flushes visible before finish, atomic publish, round trip.
+// Recorder: merged runs, periodic flushes visible before finish, atomic publish, round trip; a
+// leftover or busy PATH.part is kept and named; a failed write (file-size limit, the same path as
+// a full disk) keeps a valid prefix and says so.
 
 #include "play/recorder.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -117,6 +123,133 @@ TEST(Recorder, ReportsAnUnwritableFolder) {
   EXPECT_FALSE(rec.error().empty());
   rec.record(kUp);
   EXPECT_FALSE(rec.finish().empty());
+}
+
+TEST(Recorder, KeepsAndNamesALeftoverPart) {
+  const fs::path dir = tempDir("leftover");
+  const fs::path out = dir / "r.replay";
+  const std::string leftover = "cardemo-replay 1\nhz 120\n120 U\n";
+  std::ofstream(dir / "r.replay.part") << leftover;
+  EXPECT_NE(leftoverRecording(out.string()).find("left over"), std::string::npos);
+  EXPECT_NE(leftoverRecording(out.string()).find("cardemo replay " + out.string() + ".part"),
+            std::string::npos);
+  {
+    Recorder rec(out.string(), "", 120, 120);
+    EXPECT_NE(rec.error().find("left over"), std::string::npos) << rec.error();
+    rec.record(kUp);
+    EXPECT_FALSE(rec.finish().empty());
+  }
+  EXPECT_EQ(slurp(dir / "r.replay.part"), leftover) << "a leftover recording must not be touched";
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(leftoverRecording((dir / "other.replay").string()), "");
+}
+
+TEST(Recorder, NamesAPartBeingRecordedByAnotherGame) {
+  const fs::path dir = tempDir("busy");
+  const fs::path out = dir / "r.replay";
+  Recorder first(out.string(), "", 120, 120);
+  ASSERT_EQ(first.error(), "");
+  EXPECT_NE(leftoverRecording(out.string()).find("recording to it right now"), std::string::npos)
+      << leftoverRecording(out.string());
+  Recorder second(out.string(), "", 120, 120);
+  EXPECT_NE(second.error().find("recording to it right now"), std::string::npos) << second.error();
+  first.record(kUp);
+  EXPECT_EQ(first.finish(), "");
+  EXPECT_EQ(leftoverRecording(out.string()), "");
+}
+
+// Records `frames` random inputs (flushing every 10 frames) in a child process whose files may not
+// grow past `limit_bytes` (RLIMIT_FSIZE, SIGXFSZ ignored as the game does: writes then fail with
+// EFBIG, the same path as ENOSPC on a full disk). The child writes its error and durable frame
+// count to `report`.
+void recordUnderSizeLimit(const fs::path& out, const fs::path& report, rlim_t limit_bytes,
+                          const std::vector<InputFrame>& inputs) {
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit original{};
+    if (getrlimit(RLIMIT_FSIZE, &original) != 0) _exit(3);
+    rlimit limit = original;
+    limit.rlim_cur = limit_bytes;  // the soft limit only, so that it can be lifted again
+    if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(3);
+    std::string result;
+    {
+      Recorder rec(out.string(), "", 120, 10);
+      for (const InputFrame& in : inputs) rec.record(in);
+      const std::string why = rec.finish();
+      result = std::to_string(rec.durableFrames()) + "\n" + why + "\n";
+    }
+    if (setrlimit(RLIMIT_FSIZE, &original) != 0) _exit(3);
+    std::ofstream(report) << result;
+    _exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+}
+
+std::vector<InputFrame> randomInputs(int n, std::uint32_t seed) {
+  std::vector<InputFrame> inputs;
+  for (int i = 0; i < n; ++i) {
+    seed = seed * 1664525u + 1013904223u;
+    inputs.push_back(InputFrame::fromBits(static_cast<std::uint8_t>(seed >> 28)));
+  }
+  return inputs;
+}
+
+TEST(Recorder, AFailedWriteKeepsAValidPrefixAndSaysSo) {
+  const fs::path dir = tempDir("full");
+  const fs::path out = dir / "r.replay";
+  const std::vector<InputFrame> inputs = randomInputs(1000, 99);
+  recordUnderSizeLimit(out, dir / "report.txt", 2000, inputs);
+  std::ifstream report(dir / "report.txt");
+  std::int64_t durable = -1;
+  std::string blank, why;
+  report >> durable;
+  std::getline(report, blank);
+  std::getline(report, why);
+  EXPECT_NE(why.find("File too large"), std::string::npos) << why;
+  EXPECT_NE(why.find("kept in"), std::string::npos) << why;
+  EXPECT_FALSE(fs::exists(out)) << "an incomplete recording must not be published";
+  const std::string part = slurp(dir / "r.replay.part");
+  EXPECT_LE(part.size(), 2000u);
+  const Parsed<Replay> prefix = parseReplay(part, "r.replay.part");
+  ASSERT_TRUE(prefix.ok()) << prefix.error().toString();
+  EXPECT_EQ(prefix.value().totalFrames(), durable);
+  EXPECT_GT(durable, 0);
+  EXPECT_EQ(durable % 10, 0) << "the file ends at a flush point";
+  std::vector<InputFrame> back;
+  for (const InputRun& run : prefix.value().runs) back.insert(back.end(), run.count, run.keys);
+  EXPECT_TRUE(std::equal(back.begin(), back.end(), inputs.begin()));
+}
+
+TEST(Recorder, NoRoomForTheHeaderLeavesNoFile) {
+  const fs::path dir = tempDir("noroom");
+  const fs::path out = dir / "r.replay";
+  recordUnderSizeLimit(out, dir / "report.txt", 8, randomInputs(50, 7));
+  const std::string report = slurp(dir / "report.txt");
+  EXPECT_NE(report.find("cannot write"), std::string::npos) << report;
+  EXPECT_FALSE(fs::exists(dir / "r.replay.part"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// Every write stays inside one 4 KiB page, so a kill between pages cannot cut a line: the file is
+// a valid replay at every page boundary, and pads with comment lines where a line would straddle.
+TEST(Recorder, NoLineStraddlesAPage) {
+  const fs::path dir = tempDir("pages");
+  const fs::path out = dir / "r.replay";
+  {
+    Recorder rec(out.string(), "", 120, 37);
+    for (const InputFrame& in : randomInputs(5000, 5)) rec.record(in);
+  }
+  const std::string text = slurp(out);
+  ASSERT_GT(text.size(), 4 * 4096u);
+  for (std::size_t page = 4096; page < text.size(); page += 4096) {
+    EXPECT_EQ(text[page - 1], '\n') << "page ending at byte " << page;
+    const Parsed<Replay> prefix = parseReplay(text.substr(0, page), "prefix");
+    EXPECT_TRUE(prefix.ok()) << prefix.error().toString();
+  }
 }
 
 }  // namespace
