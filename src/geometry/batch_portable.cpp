@@ -20,49 +20,49 @@ struct Lane1 {
   static Lane1 splat(double x) { return {x}; }
 };
 
-Lane1 operator+(Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Lane1 operator+(Lane1 a, Lane1 b) {
   return {a.v + b.v};
 }
-Lane1 operator-(Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Lane1 operator-(Lane1 a, Lane1 b) {
   return {a.v - b.v};
 }
-Lane1 operator*(Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Lane1 operator*(Lane1 a, Lane1 b) {
   return {a.v * b.v};
 }
-Lane1 operator/(Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Lane1 operator/(Lane1 a, Lane1 b) {
   return {a.v / b.v};
 }
-Lane1 operator-(Lane1 a) {
+[[gnu::always_inline]] inline Lane1 operator-(Lane1 a) {
   return {-a.v};
 }
-Lane1 abs(Lane1 a) {
+[[gnu::always_inline]] inline Lane1 abs(Lane1 a) {
   return {std::fabs(a.v)};
 }
-Lane1 sqrt(Lane1 a) {
+[[gnu::always_inline]] inline Lane1 sqrt(Lane1 a) {
   return {std::sqrt(a.v)};
 }
-Lane1 fma(Lane1 a, Lane1 b, Lane1 c) {
+[[gnu::always_inline]] inline Lane1 fma(Lane1 a, Lane1 b, Lane1 c) {
   return {std::fma(a.v, b.v, c.v)};
 }
-Mask1 gt(Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Mask1 gt(Lane1 a, Lane1 b) {
   return {a.v > b.v};
 }
-Mask1 lt(Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Mask1 lt(Lane1 a, Lane1 b) {
   return {a.v < b.v};
 }
-Mask1 operator|(Mask1 a, Mask1 b) {
+[[gnu::always_inline]] inline Mask1 operator|(Mask1 a, Mask1 b) {
   return {a.m || b.m};
 }
-Mask1 operator&(Mask1 a, Mask1 b) {
+[[gnu::always_inline]] inline Mask1 operator&(Mask1 a, Mask1 b) {
   return {a.m && b.m};
 }
-Lane1 select(Mask1 m, Lane1 a, Lane1 b) {
+[[gnu::always_inline]] inline Lane1 select(Mask1 m, Lane1 a, Lane1 b) {
   return m.m ? a : b;
 }
-void store(double* p, Lane1 a) {
+[[gnu::always_inline]] inline void store(double* p, Lane1 a) {
   *p = a.v;
 }
-void storeHits(std::uint8_t* p, Mask1 separated) {
+[[gnu::always_inline]] inline void storeHits(std::uint8_t* p, Mask1 separated) {
   *p = separated.m ? 0 : 1;
 }
 
