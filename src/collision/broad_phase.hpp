@@ -1,6 +1,7 @@
 #pragma once
 /// Static broad phase over the parked cars and obstacles: a uniform grid built once.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -9,11 +10,14 @@
 
 namespace cardemo {
 
-/// Uniform grid in compressed-sparse-row form over static boxes. Build is O(N); a query visits only
-/// the cells its box overlaps, so its cost does not grow with the number of parked cars.
+/// Uniform grids in compressed-sparse-row form over static boxes, one grid per size class. Each
+/// box is stored once, in the cell that holds its lower-left corner, and the cells of a row are
+/// contiguous, so a query scans one contiguous run of boxes per row of cells it reaches. Build is
+/// O(N); a query's cost depends on the boxes near it, not on how many there are. Queries do not
+/// modify the grid, so concurrent queries are safe.
 class UniformGrid {
  public:
-  /// Builds the grid over `boxes` (index i of the span is the item id). The cell size follows the
+  /// Builds the grid over `boxes` (index i of the span is the item id). Cell sizes follow the
   /// typical box size; the grid covers the union of the boxes. An empty span is allowed.
   explicit UniformGrid(std::span<const Aabb2> boxes);
 
@@ -22,20 +26,50 @@ class UniformGrid {
   void query(const Aabb2& query, std::vector<std::uint32_t>& out) const;
 
   /// Number of items the grid was built over.
-  [[nodiscard]] std::size_t size() const { return boxes_.size(); }
+  [[nodiscard]] std::size_t size() const { return size_; }
   /// Heap bytes held by the structure (for bytes-per-car reports).
   [[nodiscard]] std::size_t memoryBytes() const;
+  /// Number of size classes in use (1 for a lot of similar cars), not counting oversized items.
+  [[nodiscard]] std::size_t levelCount() const { return levels_.size(); }
 
  private:
-  std::vector<Aabb2> boxes_;
+  // One grid over the items of one size class. Item k of `boxes`/`ids` lies in the cell of its
+  // lower-left corner; cells are in row-major order, cell c holding [cell_start[c],
+  // cell_start[c+1]).
+  struct Level {
+    Aabb2 bounds;           // union of the level's boxes
+    double inv_cell = 1.0;  // 1 / cell size, 1/m
+    Eigen::Vector2d reach;  // rounded-up largest box extent along x and y, metres
+    std::int64_t nx = 0, ny = 0;
+    std::vector<std::uint32_t> cell_start;
+    std::vector<Aabb2> boxes;
+    std::vector<std::uint32_t> ids;
+  };
+
+  std::size_t size_ = 0;
   Aabb2 bounds_;
-  double inv_cell_ = 1.0;
-  std::int64_t nx_ = 0, ny_ = 0;
-  std::vector<std::uint32_t> cell_start_;  // nx*ny+1 offsets into cell_items_
-  std::vector<std::uint32_t> cell_items_;
-  std::vector<std::uint32_t> large_items_;  // items spanning too many cells: tested by every query
-  mutable std::vector<std::uint32_t> stamp_;  // last query number that reported item i
-  mutable std::uint32_t query_number_ = 0;
+  std::vector<Level> levels_;
+  std::vector<Aabb2> large_boxes_;  // items too big for any level: tested by every query
+  std::vector<std::uint32_t> large_ids_;
+
+  // Gathers a query's ids in a small buffer on the stack and moves them to `out` when full or at
+  // the end, so the scan writes without bounds checks and `out` is touched once.
+  struct Collector {
+    explicit Collector(std::vector<std::uint32_t>& target) : out(target) {}
+    std::vector<std::uint32_t>& out;
+    std::array<std::uint32_t, 128> buffer;  // deliberately not zeroed: written before read
+    std::size_t count = 0;
+    [[nodiscard]] std::size_t room() const { return buffer.size() - count; }
+    void add(std::uint32_t id) {
+      buffer[count++] = id;
+      if (count == buffer.size()) spill();
+    }
+    void spill();
+    void finish();  // sorted ids into `out`
+  };
+
+  static Level buildLevel(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members);
+  static void queryLevel(const Level& level, const Aabb2& query, Collector& found);
 };
 
 /// Brute-force twin of UniformGrid: tests every box. The reference in tests.

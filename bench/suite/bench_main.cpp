@@ -1,0 +1,52 @@
+// cardemo_bench: the whole suite in one executable. `--smoke` (before any Google Benchmark flag)
+// selects small sizes for the CTest smoke run; every other flag goes to Google Benchmark.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "bench_registry.hpp"
+#include "geometry/batch_path.hpp"
+
+namespace cardemo::bench {
+
+std::string sizeLabel(std::size_t n) {
+  if (n >= 1000000 && n % 1000000 == 0) return std::to_string(n / 1000000) + "M";
+  if (n >= 1000 && n % 1000 == 0) return std::to_string(n / 1000) + "k";
+  return std::to_string(n);
+}
+
+}  // namespace cardemo::bench
+
+int main(int argc, char** argv) {
+  cardemo::bench::BenchConfig config;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--smoke") == 0) {
+      config.smoke = true;
+    } else {
+      args.push_back(argv[i]);
+    }
+  }
+  int count = static_cast<int>(args.size());
+  benchmark::AddCustomContext("batch_path", cardemo::batchPathName(cardemo::batchPath()));
+  benchmark::AddCustomContext(
+      "avx2_available", cardemo::batchPathAvailable(cardemo::BatchPath::kAvx2) ? "yes" : "no");
+#if defined(CARDEMO_HAVE_COMPARE)
+  benchmark::AddCustomContext("box2d", "2.4.1 (Debian libbox2d), float, skin 0");
+#else
+  benchmark::AddCustomContext("box2d", "not built");
+#endif
+  cardemo::bench::registerNarrow(config);
+  cardemo::bench::registerBatch(config);
+  cardemo::bench::registerBroad(config);
+  cardemo::bench::registerStep(config);
+  cardemo::bench::registerLoad(config);
+  benchmark::Initialize(&count, args.data());
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

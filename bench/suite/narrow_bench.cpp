@@ -1,0 +1,141 @@
+// Narrow phase, one pair at a time: every cardemo pair query and Box2D's on the same random pairs
+// (about 45% overlapping, in random order), 1k pairs (in cache) and 1M pairs (in memory).
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "bench_registry.hpp"
+#include "geometry/convex_polygon.hpp"
+#include "geometry/manifold2.hpp"
+#include "geometry/obb3.hpp"
+#include "geometry/sat_obb2.hpp"
+
+#if defined(CARDEMO_HAVE_COMPARE)
+#include "compare/box2d/box2d_shapes.hpp"
+#endif
+
+namespace cardemo::bench {
+namespace {
+
+struct PolygonPairs {
+  std::vector<ConvexPolygon> a, b;
+};
+
+const PolygonPairs& polygonPairs(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<PolygonPairs>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    slot = std::make_unique<PolygonPairs>();
+    const PairSet2& set = pairSet2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      slot->a.push_back(ConvexPolygon::fromObb(set.a[i]));
+      slot->b.push_back(ConvexPolygon::fromObb(set.b[i]));
+    }
+  }
+  return *slot;
+}
+
+// Runs `per_pair(i)` over every pair each iteration; items are pairs.
+template <class PerPair>
+void overPairs(benchmark::State& state, std::size_t n, double overlap_share,
+               const PerPair& per_pair) {
+  double sink = 0.0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < n; ++i) sink += per_pair(i);
+    benchmark::DoNotOptimize(sink);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(n));
+  state.counters["overlap_share"] = overlap_share;
+}
+
+#if defined(CARDEMO_HAVE_COMPARE)
+struct Box2dPairs {
+  std::vector<compare::Box2dShape> a, b;
+};
+
+const Box2dPairs& box2dPairs(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<Box2dPairs>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    slot = std::make_unique<Box2dPairs>();
+    const PairSet2& set = pairSet2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      slot->a.push_back(compare::box2dBox(set.a[i], 0.0f));
+      slot->b.push_back(compare::box2dBox(set.b[i], 0.0f));
+    }
+  }
+  return *slot;
+}
+#endif
+
+void registerSize(std::size_t n) {
+  const std::string size = sizeLabel(n);
+  const auto name = [&size](const char* query, const char* engine) {
+    return std::string("narrow/") + query + "/" + size + "/" + engine;
+  };
+  benchmark::RegisterBenchmark(name("overlapObb2", "cardemo").c_str(), [n](benchmark::State& s) {
+    const PairSet2& p = pairSet2(n);
+    overPairs(s, n, p.overlap_share,
+              [&p](std::size_t i) { return overlapObb2(p.a[i], p.b[i]) ? 1.0 : 0.0; });
+  });
+  benchmark::RegisterBenchmark(name("collideObb2", "cardemo").c_str(), [n](benchmark::State& s) {
+    const PairSet2& p = pairSet2(n);
+    overPairs(s, n, p.overlap_share,
+              [&p](std::size_t i) { return collideObb2(p.a[i], p.b[i]).separation; });
+  });
+  benchmark::RegisterBenchmark(name("manifoldObb2", "cardemo").c_str(), [n](benchmark::State& s) {
+    const PairSet2& p = pairSet2(n);
+    overPairs(s, n, p.overlap_share, [&p](std::size_t i) {
+      const Manifold2 m = manifoldObb2(p.a[i], p.b[i]);
+      return static_cast<double>(m.count) + m.normal.x();
+    });
+  });
+  benchmark::RegisterBenchmark(
+      name("collidePolygons", "cardemo").c_str(), [n](benchmark::State& s) {
+        const PolygonPairs& p = polygonPairs(n);
+        overPairs(s, n, pairSet2(n).overlap_share,
+                  [&p](std::size_t i) { return collidePolygons(p.a[i], p.b[i]).separation; });
+      });
+  benchmark::RegisterBenchmark(name("overlapObb3", "cardemo").c_str(), [n](benchmark::State& s) {
+    const PairSet3& p = pairSet3(n);
+    overPairs(s, n, p.overlap_share,
+              [&p](std::size_t i) { return overlapObb3(p.a[i], p.b[i]) ? 1.0 : 0.0; });
+  });
+  benchmark::RegisterBenchmark(name("collideObb3", "cardemo").c_str(), [n](benchmark::State& s) {
+    const PairSet3& p = pairSet3(n);
+    overPairs(s, n, p.overlap_share,
+              [&p](std::size_t i) { return collideObb3(p.a[i], p.b[i]).separation; });
+  });
+#if defined(CARDEMO_HAVE_COMPARE)
+  // Box2D 2.4.1 as its users call it: float world transforms, skin 0 (compare/box2d).
+  benchmark::RegisterBenchmark(name("overlapObb2", "box2d").c_str(), [n](benchmark::State& s) {
+    const Box2dPairs& p = box2dPairs(n);
+    overPairs(s, n, pairSet2(n).overlap_share, [&p](std::size_t i) {
+      return b2TestOverlap(&p.a[i].shape, 0, &p.b[i].shape, 0, p.a[i].xf, p.b[i].xf) ? 1.0 : 0.0;
+    });
+  });
+  for (const char* query : {"manifoldObb2", "collidePolygons"}) {
+    benchmark::RegisterBenchmark(name(query, "box2d").c_str(), [n](benchmark::State& s) {
+      const Box2dPairs& p = box2dPairs(n);
+      overPairs(s, n, pairSet2(n).overlap_share, [&p](std::size_t i) {
+        b2Manifold m;
+        b2CollidePolygons(&m, &p.a[i].shape, p.a[i].xf, &p.b[i].shape, p.b[i].xf);
+        return static_cast<double>(m.pointCount) + m.localNormal.x;
+      });
+    });
+  }
+#endif
+}
+
+}  // namespace
+
+void registerNarrow(const BenchConfig& config) {
+  for (const std::size_t n : {std::size_t{1000}, config.smoke ? std::size_t{10000} : 1000000}) {
+    registerSize(n);
+  }
+}
+
+}  // namespace cardemo::bench

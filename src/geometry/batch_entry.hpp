@@ -1,0 +1,64 @@
+#pragma once
+/// Internal to the batch kernels: plain views of the struct-of-arrays data and the entry points
+/// of each implementation. Deliberately free of Eigen and the standard library's inline code, so
+/// the AVX2 translation unit instantiates nothing that the linker could share with the rest.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace cardemo::batch_detail {
+
+/// One 2D box, unpacked: the query (A) of a batch.
+struct Box2One {
+  double cx, cy;  ///< Centre, world metres.
+  double ux, uy;  ///< Unit local +x axis, world frame.
+  double hx, hy;  ///< Half extents, metres.
+};
+
+/// Many 2D boxes (B), one array per field, indexed alike.
+struct Box2Arrays {
+  const double *cx, *cy;  ///< Centres, world metres.
+  const double *ux, *uy;  ///< Unit local +x axes, world frame.
+  const double *hx, *hy;  ///< Half extents, metres.
+};
+
+/// Where collide2 writes: separation and unit normal (A towards B), one entry per box.
+struct Sat2Out {
+  double* separation;  ///< Metres, <= 0 when touching or overlapping.
+  double *nx, *ny;     ///< Normal components, world frame.
+};
+
+/// One 3D box, unpacked: the query (A). r[3*j + k] is component k of box axis j (column j).
+struct Box3One {
+  double cx, cy, cz;  ///< Centre, metres.
+  double r[9];        ///< Rotation columns, column-major.
+  double hx, hy, hz;  ///< Half extents, metres.
+};
+
+/// Many 3D boxes (B), one array per field; r[3*j + k] holds component k of column j.
+struct Box3Arrays {
+  const double *cx, *cy, *cz;  ///< Centres, metres.
+  const double* r[9];          ///< Rotation columns, column-major.
+  const double *hx, *hy, *hz;  ///< Half extents, metres.
+};
+
+// Each function handles boxes [first, last) of `b` and writes entry i of the output for box i.
+void overlap2Portable(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                      std::uint8_t* hit);
+void collide2Portable(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                      const Sat2Out& out);
+void overlap3Portable(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                      std::uint8_t* hit);
+void separation3Portable(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                         double* separation);
+
+void overlap2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                  std::uint8_t* hit);
+void collide2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                  const Sat2Out& out);
+void overlap3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                  std::uint8_t* hit);
+void separation3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                     double* separation);
+
+}  // namespace cardemo::batch_detail

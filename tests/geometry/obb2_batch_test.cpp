@@ -1,0 +1,287 @@
+/// Batch 2D SAT (one box against many) against the scalar functions (bit for bit), the exact
+/// oracle, and itself on both dispatch paths, over seeded random batches and named edge cases.
+
+#include "geometry/obb2_batch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "compare/exact/exact_sat.hpp"
+#include "geometry/angle.hpp"
+#include "geometry/batch_path.hpp"
+#include "geometry/sat_obb2.hpp"
+#include "random_cases2.hpp"
+
+namespace cardemo {
+namespace {
+
+using testing::Random;
+
+// Every path this build and CPU can run; the fallback is always there.
+std::vector<BatchPath> availablePaths() {
+  std::vector<BatchPath> paths{BatchPath::kPortable};
+  if (batchPathAvailable(BatchPath::kAvx2)) paths.push_back(BatchPath::kAvx2);
+  return paths;
+}
+
+// Restores the process-wide path when a test ends.
+class PathGuard {
+ public:
+  PathGuard() : saved_(batchPath()) {}
+  ~PathGuard() { setBatchPath(saved_); }
+  PathGuard(const PathGuard&) = delete;
+  PathGuard& operator=(const PathGuard&) = delete;
+
+ private:
+  BatchPath saved_;
+};
+
+bool sameBits(double x, double y) {
+  return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
+}
+
+// Dyadic value on a 2^-10 grid: sums of such values are exact, so touching is exact.
+double dyadic(Random& rng, double lo, double hi) {
+  return std::ldexp(std::round(std::ldexp(rng.uniform(lo, hi), 10)), -10);
+}
+
+// A box B for query A, from one of several classes: near touching on one of the four axes, at a
+// random place, near parallel, exactly touching (axis-aligned, dyadic), contained, extreme sizes.
+Obb2 boxFor(const Obb2& a, Random& rng) {
+  const int kind = rng.integer(0, 5);
+  if (kind == 3 && a.axis == Eigen::Vector2d::UnitX()) {
+    Obb2 b{{0, 0}, {1, 0}, {dyadic(rng, 0.25, 10.0), dyadic(rng, 0.25, 10.0)}};
+    const double sx = rng.sign(), sy = rng.sign();
+    const bool corner = rng.integer(0, 2) == 0;
+    const double lateral = dyadic(rng, -0.9, 0.9) * (a.half.y() + b.half.y());
+    b.center = a.center + Eigen::Vector2d(sx * (a.half.x() + b.half.x()),
+                                          corner ? sy * (a.half.y() + b.half.y()) : lateral);
+    if (rng.integer(0, 1) == 0) std::swap(b.center.x(), b.center.y());
+    return b;
+  }
+  Obb2 b = kind == 5 ? rng.extremeBox({0, 0}) : rng.box({0, 0}, 0.1, 20.0);
+  if (kind == 2) {
+    const double heading = std::atan2(a.axis.y(), a.axis.x()) +
+                           rng.integer(0, 3) * 0.5 * std::numbers::pi +
+                           rng.sign() * rng.logUniform(1e-15, 1e-3);
+    b.axis = unitFromRadians(heading);
+  }
+  if (kind == 1) {
+    b.center = a.center + rng.direction() * rng.uniform(0.0, 1.2 * (a.half.norm() + b.half.norm()));
+    return b;
+  }
+  if (kind == 4) {
+    b.half = a.half.cwiseMin(Eigen::Vector2d(1, 1)) * rng.uniform(0.01, 0.3);
+    b.center = a.center + a.axis * rng.uniform(-0.5, 0.5) * a.half.x() +
+               a.perp() * rng.uniform(-0.5, 0.5) * a.half.y();
+    return b;
+  }
+  // Near touching along one of the four face normals, with a gap of either sign.
+  const int axis = rng.integer(0, 3);
+  const Eigen::Vector2d d = rng.sign() * (axis == 0   ? a.axis
+                                          : axis == 1 ? a.perp()
+                                          : axis == 2 ? b.axis
+                                                      : b.perp());
+  const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
+  const Eigen::Vector2d lateral{-d.y(), d.x()};
+  b.center = a.center + d * (reach + rng.sign() * rng.logUniform(1e-9, 1.0)) +
+             lateral * rng.uniform(-0.5, 0.5) * std::min(a.half.minCoeff(), b.half.minCoeff());
+  return b;
+}
+
+// A query box near the origin, far out (up to 1e7 m), axis-aligned (for exact touching), or
+// extreme in size.
+Obb2 queryBox(Random& rng) {
+  switch (rng.integer(0, 3)) {
+    case 0:
+      return rng.box(rng.direction() * rng.uniform(0, 50), 0.1, 20.0);
+    case 1:
+      return rng.box(rng.farPoint(1e7), 0.1, 20.0);
+    case 2: {
+      const double far = rng.integer(0, 1) == 0 ? 0.0 : 4194304.0;  // 2^22: sums stay exact
+      return {{far + dyadic(rng, -8, 8), far + dyadic(rng, -8, 8)},
+              {1, 0},
+              {dyadic(rng, 0.25, 10.0), dyadic(rng, 0.25, 10.0)}};
+    }
+    default:
+      return rng.extremeBox(rng.direction() * rng.uniform(0, 1000));
+  }
+}
+
+struct Batch {
+  Obb2 a;
+  std::vector<Obb2> boxes;
+};
+
+Batch randomBatch(Random& rng, int max_size) {
+  Batch batch{queryBox(rng), {}};
+  const int n = rng.integer(0, max_size);
+  for (int i = 0; i < n; ++i) batch.boxes.push_back(boxFor(batch.a, rng));
+  return batch;
+}
+
+struct Outputs {
+  std::vector<std::uint8_t> hit;
+  std::vector<double> sep, nx, ny;
+};
+
+Outputs runBatch(const Obb2& a, const Obb2Batch& many) {
+  Outputs o{std::vector<std::uint8_t>(many.size(), 7), std::vector<double>(many.size()),
+            std::vector<double>(many.size()), std::vector<double>(many.size())};
+  overlapObb2Batch(a, many, o.hit);
+  collideObb2Batch(a, many, o.sep, o.nx, o.ny);
+  return o;
+}
+
+TEST(Obb2Batch, StoresTheBoxesExactly) {
+  Random rng(11);
+  std::vector<Obb2> boxes;
+  for (int i = 0; i < 9; ++i) boxes.push_back(rng.box(rng.farPoint(1e7), 0.01, 100.0));
+  const Obb2Batch batch(boxes);
+  ASSERT_EQ(batch.size(), boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    EXPECT_EQ(batch.box(i).center, boxes[i].center);
+    EXPECT_EQ(batch.box(i).axis, boxes[i].axis);
+    EXPECT_EQ(batch.box(i).half, boxes[i].half);
+  }
+  EXPECT_GE(batch.memoryBytes(), boxes.size() * 6 * sizeof(double));
+}
+
+TEST(Obb2Batch, EqualsScalarBitForBitOnEveryPath) {
+  PathGuard guard;
+  Random rng(2024);
+  const int batches = testing::scaledCount(4000);
+  int pairs = 0, hits = 0;
+  for (int k = 0; k < batches; ++k) {
+    const Batch batch = randomBatch(rng, 67);
+    const Obb2Batch many(batch.boxes);
+    std::vector<Outputs> per_path;
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      per_path.push_back(runBatch(batch.a, many));
+      const Outputs& o = per_path.back();
+      for (std::size_t i = 0; i < batch.boxes.size(); ++i) {
+        const Obb2& b = batch.boxes[i];
+        const SatResult2 r = collideObb2(batch.a, b);
+        ASSERT_EQ(o.hit[i], overlapObb2(batch.a, b) ? 1 : 0)
+            << batchPathName(path) << " batch " << k << " box " << i;
+        ASSERT_TRUE(sameBits(o.sep[i], r.separation) && sameBits(o.nx[i], r.normal.x()) &&
+                    sameBits(o.ny[i], r.normal.y()))
+            << batchPathName(path) << " batch " << k << " box " << i << ": sep " << o.sep[i]
+            << " vs " << r.separation;
+      }
+    }
+    for (std::size_t p = 1; p < per_path.size(); ++p) {
+      ASSERT_EQ(per_path[p].hit, per_path[0].hit);
+      for (std::size_t i = 0; i < batch.boxes.size(); ++i) {
+        ASSERT_TRUE(sameBits(per_path[p].sep[i], per_path[0].sep[i]));
+      }
+    }
+    pairs += static_cast<int>(batch.boxes.size());
+    for (const std::uint8_t h : per_path[0].hit) hits += h;
+  }
+  // The mix must exercise both verdicts in earnest.
+  EXPECT_GT(hits, pairs / 5);
+  EXPECT_LT(hits, 4 * pairs / 5);
+}
+
+TEST(Obb2Batch, AgreesWithTheExactOracleOnEveryPath) {
+  PathGuard guard;
+  Random rng(77);
+  const int batches = testing::scaledCount(600);
+  int checked = 0, borderline = 0;
+  double worst = 0.0;
+  for (int k = 0; k < batches; ++k) {
+    const Batch batch = randomBatch(rng, 40);
+    const Obb2Batch many(batch.boxes);
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      const Outputs o = runBatch(batch.a, many);
+      for (std::size_t i = 0; i < batch.boxes.size(); ++i) {
+        const exact::ExactResult ex = exact::collideObb2(batch.a, batch.boxes[i]);
+        const double err = std::abs(o.sep[i] - ex.separation);
+        worst = std::max(worst, err);
+        ASSERT_LE(err, testing::kSepTolerance) << batchPathName(path) << " batch " << k;
+        if (std::abs(ex.separation) > testing::kHitTolerance) {
+          ASSERT_EQ(o.hit[i] == 1, ex.hit) << batchPathName(path) << " batch " << k;
+        } else {
+          ++borderline;
+        }
+        // The normal realises the separation: B's support minus A's along it.
+        const Eigen::Vector2d n{o.nx[i], o.ny[i]};
+        ASSERT_NEAR(n.norm(), 1.0, 1e-12);
+        const double gap =
+            testing::signedGap(batch.a.corners(), batch.boxes[i].corners(), n, batch.a.center);
+        ASSERT_NEAR(gap, o.sep[i], testing::kSepTolerance);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(borderline, checked / 20) << "the cases must include near-touching pairs";
+  std::printf("    %d pairs checked, %d borderline, max |sep - exact| = %.3g m\n", checked,
+              borderline, worst);
+}
+
+TEST(Obb2Batch, EveryTailLengthMatchesScalar) {
+  PathGuard guard;
+  Random rng(5);
+  const Obb2 a = rng.box({3, -2}, 1.0, 5.0);
+  std::vector<Obb2> all;
+  for (int i = 0; i < 13; ++i) all.push_back(boxFor(a, rng));
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    for (std::size_t n = 0; n <= all.size(); ++n) {
+      const Obb2Batch many(std::span<const Obb2>(all.data(), n));
+      const Outputs o = runBatch(a, many);
+      for (std::size_t i = 0; i < n; ++i) {
+        EXPECT_EQ(o.hit[i], overlapObb2(a, all[i]) ? 1 : 0) << n << " " << i;
+        EXPECT_TRUE(sameBits(o.sep[i], collideObb2(a, all[i]).separation)) << n << " " << i;
+      }
+    }
+  }
+}
+
+TEST(Obb2Batch, TouchingCountsAsHitFarFromTheOrigin) {
+  PathGuard guard;
+  const Eigen::Vector2d far{4194304.0, -4194304.0};
+  const Obb2 a{far, {1, 0}, {2.25, 1.0}};
+  // Sharing an edge, sharing a corner, a hair apart, and turned 90 degrees sharing an edge.
+  const std::vector<Obb2> boxes{{far + Eigen::Vector2d(4.5, 0.5), {1, 0}, {2.25, 1.0}},
+                                {far + Eigen::Vector2d(4.5, 2.0), {1, 0}, {2.25, 1.0}},
+                                {far + Eigen::Vector2d(4.5 + 0x1p-20, 0), {1, 0}, {2.25, 1.0}},
+                                {far + Eigen::Vector2d(3.25, 0.0), {0, 1}, {2.0, 1.0}}};
+  const Obb2Batch many(boxes);
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    const Outputs o = runBatch(a, many);
+    EXPECT_EQ(o.hit, (std::vector<std::uint8_t>{1, 1, 0, 1})) << batchPathName(path);
+    EXPECT_EQ(o.sep[0], 0.0);
+    EXPECT_EQ(o.sep[2], 0x1p-20);
+    EXPECT_EQ(o.nx[2], 1.0);
+    EXPECT_EQ(o.ny[2], 0.0);
+  }
+}
+
+TEST(BatchPath, ForcingTheFallbackSticksAndAvx2IsUsedWhenAvailable) {
+  PathGuard guard;
+  setBatchPath(BatchPath::kPortable);
+  EXPECT_EQ(batchPath(), BatchPath::kPortable);
+  EXPECT_TRUE(batchPathAvailable(BatchPath::kPortable));
+  EXPECT_STREQ(batchPathName(BatchPath::kPortable), "portable");
+  EXPECT_STREQ(batchPathName(BatchPath::kAvx2), "avx2");
+#if defined(__x86_64__)
+  // This project's CPUs (and CI's) have AVX2; a build without the AVX2 file says so.
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+    std::printf("    AVX2 path %s\n",
+                batchPathAvailable(BatchPath::kAvx2) ? "available" : "not built");
+  }
+#endif
+}
+
+}  // namespace
+}  // namespace cardemo

@@ -1,0 +1,218 @@
+/// Batch 3D SAT (one box against many) against the exact oracle, the scalar collideObb3, and
+/// itself on both dispatch paths, over the seeded classes of random_cases3.hpp.
+
+#include "geometry/obb3_batch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "compare/exact/exact_sat.hpp"
+#include "geometry/batch_path.hpp"
+#include "random_cases3.hpp"
+
+namespace cardemo {
+namespace {
+
+using test3::Pair3;
+
+constexpr double kHitTolerance = 1e-6;  // CONTRACT: hit right when |sep| > 1e-6 m
+constexpr double kSepTolerance = 2e-6;  // CONTRACT: sep within 2e-6 m
+// Batch and scalar are both within ~1e-14 m of the truth here; 1e-9 m leaves room for sizes and
+// offsets up to 1e7 m while still catching any wrong axis or sign.
+constexpr double kScalarTolerance = 1e-9;
+
+std::vector<BatchPath> availablePaths() {
+  std::vector<BatchPath> paths{BatchPath::kPortable};
+  if (batchPathAvailable(BatchPath::kAvx2)) paths.push_back(BatchPath::kAvx2);
+  return paths;
+}
+
+class PathGuard {
+ public:
+  PathGuard() : saved_(batchPath()) {}
+  ~PathGuard() { setBatchPath(saved_); }
+  PathGuard(const PathGuard&) = delete;
+  PathGuard& operator=(const PathGuard&) = delete;
+
+ private:
+  BatchPath saved_;
+};
+
+bool sameBits(double x, double y) {
+  return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
+}
+
+// The generated B, plus copies moved to other gaps along candidate axes of the pair, so that a
+// whole batch shares the pair's rotation relation (near-parallel, exactly parallel, ...).
+std::vector<Obb3> batchFor(const Pair3& p, std::mt19937_64& rng) {
+  std::vector<Obb3> boxes{p.b};
+  const int extra = static_cast<int>(rng() % 7);
+  for (int k = 0; k < extra; ++k) {
+    Obb3 b = p.b;
+    Eigen::Vector3d n = test3::candidateAxis(p.a, p.b, static_cast<int>(rng() % 15));
+    if (n.isZero()) n = test3::randomUnit(rng);
+    test3::placeAtGap(p.a, b, n * test3::randomSign(rng), test3::randomGap(rng));
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+struct Tally {
+  int pairs = 0;
+  int hits = 0;
+  double worst_exact = 0.0;
+  double worst_scalar = 0.0;
+};
+
+void runClass(const char* name, std::uint64_t seed,
+              const std::function<Pair3(std::mt19937_64&)>& gen, int count = 1500,
+              bool strict_hit = false) {
+  PathGuard guard;
+  std::mt19937_64 rng(seed);
+  Tally t;
+  const int n = test3::scaledCount(count);
+  for (int k = 0; k < n; ++k) {
+    const Pair3 p = gen(rng);
+    const std::vector<Obb3> boxes = batchFor(p, rng);
+    const Obb3Batch many(boxes);
+    std::vector<std::vector<double>> seps;
+    std::vector<std::vector<std::uint8_t>> hits;
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      seps.emplace_back(boxes.size());
+      hits.emplace_back(boxes.size(), 7);
+      separationObb3Batch(p.a, many, seps.back());
+      overlapObb3Batch(p.a, many, hits.back());
+    }
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const double sep = seps[0][i];
+      const bool hit = hits[0][i] == 1;
+      for (std::size_t q = 1; q < seps.size(); ++q) {
+        ASSERT_TRUE(sameBits(seps[q][i], sep)) << name << " case " << k << ": paths differ";
+        ASSERT_EQ(hits[q][i], hits[0][i]) << name << " case " << k << ": paths differ";
+      }
+      ASSERT_EQ(hit, sep <= 0.0) << name << " case " << k << ": overlap disagrees with sep";
+      const exact::ExactResult ex = exact::collideObb3(p.a, boxes[i]);
+      const SatResult3 scalar = collideObb3(p.a, boxes[i]);
+      const double err = std::abs(sep - ex.separation);
+      const double diff = std::abs(sep - scalar.separation);
+      t.worst_exact = std::max(t.worst_exact, err);
+      t.worst_scalar = std::max(t.worst_scalar, diff);
+      ASSERT_LE(err, kSepTolerance) << name << " case " << k << " box " << i;
+      ASSERT_LE(diff, kScalarTolerance) << name << " case " << k << " box " << i;
+      if (strict_hit || std::abs(ex.separation) > kHitTolerance) {
+        ASSERT_EQ(hit, ex.hit) << name << " case " << k << " box " << i << " sep " << sep
+                               << " exact " << ex.separation;
+      }
+      ++t.pairs;
+      t.hits += ex.hit ? 1 : 0;
+    }
+  }
+  std::printf(
+      "    [%s] %d pairs, %d exact hits, worst |sep - exact| %.3g m, |sep - scalar| %.3g m\n", name,
+      t.pairs, t.hits, t.worst_exact, t.worst_scalar);
+  EXPECT_GT(t.hits, 0) << name;
+}
+
+TEST(Obb3Batch, StoresTheBoxesExactly) {
+  std::mt19937_64 rng(3);
+  std::vector<Obb3> boxes;
+  for (int i = 0; i < 6; ++i) {
+    boxes.push_back(Obb3::fromQuaternion(test3::randomCenter(rng), test3::randomRotation(rng),
+                                         test3::randomSize(rng)));
+  }
+  const Obb3Batch batch(boxes);
+  ASSERT_EQ(batch.size(), boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    EXPECT_EQ(batch.box(i).center, boxes[i].center);
+    EXPECT_EQ(batch.box(i).rotation, boxes[i].rotation);
+    EXPECT_EQ(batch.box(i).half, boxes[i].half);
+  }
+  EXPECT_GE(batch.memoryBytes(), boxes.size() * 15 * sizeof(double));
+}
+
+TEST(Obb3BatchRandom, GapsBothSidesOfTouching) {
+  runClass("gaps", 0xba7c0001, test3::gapPair);
+}
+
+TEST(Obb3BatchRandom, FarFromOrigin) {
+  runClass("far", 0xba7c0002, test3::farPair);
+}
+
+TEST(Obb3BatchRandom, ExtremeSizesAndAspects) {
+  runClass("sizes", 0xba7c0003, test3::sizePair);
+}
+
+TEST(Obb3BatchRandom, NearParallelEdges) {
+  runClass("near-parallel", 0xba7c0004,
+           [](std::mt19937_64& rng) { return test3::nearParallelPair(rng); });
+}
+
+TEST(Obb3BatchRandom, ExactlyCoincidentAndParallel) {
+  runClass("coincident", 0xba7c0005, test3::coincidentPair, 1000);
+  runClass("parallel", 0xba7c0006, test3::parallelPair);
+}
+
+TEST(Obb3BatchRandom, Containment) {
+  runClass("containment", 0xba7c0007, test3::containmentPair);
+}
+
+TEST(Obb3BatchRandom, ExactTouchingIsAHit) {
+  // batchFor only adds moved copies at random gaps; the generated B itself touches exactly.
+  runClass("touching", 0xba7c0008, test3::touchingPair, 1500, false);
+  PathGuard guard;
+  std::mt19937_64 rng(0xba7c0009);
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    for (int k = 0; k < 500; ++k) {
+      const Pair3 p = test3::touchingPair(rng);
+      const std::vector<Obb3> one{p.b};
+      const Obb3Batch many(one);
+      double sep = 1.0;
+      std::uint8_t hit = 0;
+      separationObb3Batch(p.a, many, std::span<double>(&sep, 1));
+      overlapObb3Batch(p.a, many, std::span<std::uint8_t>(&hit, 1));
+      EXPECT_EQ(sep, 0.0) << batchPathName(path);
+      EXPECT_EQ(hit, 1) << batchPathName(path);
+    }
+  }
+}
+
+// Crossed beams near-parallel to 1e-15 rad far from the origin: only an edge axis separates them.
+TEST(Obb3Batch, CrossedBeamsSeparatedByAnEdgeAxisOnEveryPath) {
+  PathGuard guard;
+  for (const double angle : {1e-15, 1e-12, 1e-9, 1e-6, 1e-3}) {
+    const Eigen::Quaterniond tilt(Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()));
+    const Obb3 a =
+        Obb3::fromQuaternion({1e7, -3e6, 2e5}, Eigen::Quaterniond::Identity(), {100.0, 0.5, 0.5});
+    const Obb3 shape = Obb3::fromQuaternion({0, 0, 0}, tilt, {100.0, 0.5, 0.5});
+    const Eigen::Vector3d u = a.rotation.col(0).cross(shape.rotation.col(0)).normalized();
+    std::vector<Obb3> boxes;
+    for (const double gap : {-1e-3, -1e-7, 1e-7, 1e-3, 2e-6}) {
+      Obb3 b = shape;
+      test3::placeAtGap(a, b, u, gap);
+      boxes.push_back(b);
+    }
+    const Obb3Batch many(boxes);
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      std::vector<double> sep(boxes.size());
+      std::vector<std::uint8_t> hit(boxes.size());
+      separationObb3Batch(a, many, sep);
+      overlapObb3Batch(a, many, hit);
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const exact::ExactResult ex = exact::collideObb3(a, boxes[i]);
+        EXPECT_NEAR(sep[i], ex.separation, kSepTolerance) << angle << " " << i;
+        EXPECT_EQ(hit[i] == 1, ex.hit) << angle << " " << i << " " << batchPathName(path);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cardemo
