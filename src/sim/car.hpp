@@ -34,7 +34,8 @@ struct CarParams {
   double lock_speed = 20.0;       ///< Speed (m/s) at which the lock has narrowed to half.
   double restitution = 0.2;       ///< Share of the normal speed that bounces back after an impact.
   double bounce_threshold = 1.0;  ///< Impacts slower than this (m/s) do not bounce at all.
-  CarIntegrator integrator = CarIntegrator::kSemiImplicitEuler;  ///< Scheme of integrateCar.
+  CarIntegrator integrator =
+      CarIntegrator::kArcRk4;  ///< Scheme of integrateCar (docs/performance.md).
 };
 
 /// Kinematic state of the player's car.
