@@ -15,7 +15,10 @@ struct RelativePose2 {
   double s = 0.0;     // sin of B's heading relative to A
 };
 
-RelativePose2 relativePose(const Obb2& a, const Obb2& b) {
+// Always inlined: out of line (GCC 12 -O2 keeps one copy for its two callers) the 32-byte result
+// goes through memory and collideObb2 took twice as long, 20 ns instead of 10 ns per pair
+// (bench/tradeoff/precision.cpp; docs/performance.md, "Run time against error").
+[[gnu::always_inline]] inline RelativePose2 relativePose(const Obb2& a, const Obb2& b) {
   // Subtract in double first (STYLE 8): the difference is small even when both centres are 1e7 m
   // out.
   const Eigen::Vector2d d = b.center - a.center;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/angle.hpp"
+#include "sim/car_schemes.hpp"
 
 namespace cardemo {
 namespace {
@@ -39,6 +40,27 @@ double resistedSpeed(double v, const CarParams& p, double dt) {
   return v > 0.0 ? v - loss : v + loss;
 }
 
+// The product's original update, kept bit for bit: command, then resistance (operator splitting),
+// then the new speed drives this step's rotation and translation.
+CarState stepSemiImplicitEuler(const CarState& steered, const InputFrame& input,
+                               const CarParams& params, double dt) {
+  CarState next = steered;
+  next.speed = resistedSpeed(commandedSpeed(steered.speed, input, params, dt), params, dt);
+
+  // Kinematic bicycle model, reference point moving along the heading (no slip):
+  // yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2).
+  const double yaw_rate = next.speed * std::tan(next.steer) / params.wheelbase;
+  next.heading = wrapRadians(steered.heading + yaw_rate * dt);
+  // Recomputed from the angle only when it changed: an exact axis-aligned start direction from
+  // unitFromDegrees survives straight driving, and the direction can never drift off unit length.
+  if (next.heading != steered.heading) next.direction = unitFromRadians(next.heading);
+
+  const double distance = next.speed * dt;
+  next.position.x() = steered.position.x() + next.direction.x() * distance;
+  next.position.y() = steered.position.y() + next.direction.y() * distance;
+  return next;
+}
+
 }  // namespace
 
 double steeringLock(const CarParams& params, double speed) {
@@ -49,29 +71,24 @@ double steeringLock(const CarParams& params, double speed) {
 
 CarState integrateCar(const CarState& state, const InputFrame& input, const CarParams& params,
                       double dt) {
-  CarState next = state;
-
+  CarState steered = state;
   const double lock = steeringLock(params, state.speed);
   double target = 0.0;
   if (input.left && !input.right) target = lock;
   if (input.right && !input.left) target = -lock;
-  next.steer = approach(state.steer, target, params.steer_rate * dt);
+  steered.steer = approach(state.steer, target, params.steer_rate * dt);
 
-  // Semi-implicit Euler: the new speed drives this step's rotation and translation.
-  next.speed = resistedSpeed(commandedSpeed(state.speed, input, params, dt), params, dt);
-
-  // Kinematic bicycle model, reference point moving along the heading (no slip):
-  // yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2).
-  const double yaw_rate = next.speed * std::tan(next.steer) / params.wheelbase;
-  next.heading = wrapRadians(state.heading + yaw_rate * dt);
-  // Recomputed from the angle only when it changed: an exact axis-aligned start direction from
-  // unitFromDegrees survives straight driving, and the direction can never drift off unit length.
-  if (next.heading != state.heading) next.direction = unitFromRadians(next.heading);
-
-  const double distance = next.speed * dt;
-  next.position.x() = state.position.x() + next.direction.x() * distance;
-  next.position.y() = state.position.y() + next.direction.y() * distance;
-  return next;
+  switch (params.integrator) {
+    case CarIntegrator::kExplicitEuler:
+      return stepExplicitEuler(steered, speedLawFor(state.speed, input, params), params, dt);
+    case CarIntegrator::kRk4:
+      return stepRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+    case CarIntegrator::kArcRk4:
+      return stepArcRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+    case CarIntegrator::kSemiImplicitEuler:
+      break;
+  }
+  return stepSemiImplicitEuler(steered, input, params, dt);
 }
 
 Obb2 carBox(const CarState& state, const CarParams& params) {

@@ -8,6 +8,16 @@
 
 namespace cardemo {
 
+/// How integrateCar advances the car's ODE over one step (inputs held within the step).
+/// docs/performance.md ("Run time against error") measures each against closed forms.
+enum class CarIntegrator {
+  kSemiImplicitEuler,  ///< Speed first, then heading and position from the new values (order 1).
+  kExplicitEuler,      ///< Heading, position and speed all from the start of the step (order 1).
+  kRk4,                ///< Classical Runge-Kutta over (x, y, heading, speed) (order 4).
+  kArcRk4,  ///< Speed and distance by RK4; the step follows the exact arc of its constant
+            ///< curvature.
+};
+
 /// Tunable car parameters; defaults suit a 4.5 m family car.
 struct CarParams {
   double length = 4.5;               ///< Body length along the heading, metres.
@@ -24,6 +34,8 @@ struct CarParams {
   double lock_speed = 20.0;       ///< Speed (m/s) at which the lock has narrowed to half.
   double restitution = 0.2;       ///< Share of the normal speed that bounces back after an impact.
   double bounce_threshold = 1.0;  ///< Impacts slower than this (m/s) do not bounce at all.
+  CarIntegrator integrator =
+      CarIntegrator::kArcRk4;  ///< Scheme of integrateCar (docs/performance.md).
 };
 
 /// Kinematic state of the player's car.
@@ -41,9 +53,11 @@ struct CarState {
 /// Steering lock at a given speed: the lock narrows as speed grows.
 [[nodiscard]] double steeringLock(const CarParams& params, double speed);
 
-/// Advances the car by one fixed step `dt` (seconds) under `input`: steering with a rate limit,
-/// throttle/brake/reverse, drag and rolling resistance, then semi-implicit Euler (speed first, then
-/// heading from the bicycle model, then position with the new heading).
+/// Advances the car by one fixed step `dt` (seconds) under `input`: the steering angle moves first
+/// (rate limited) and is then held over the step; throttle/brake/reverse, drag and rolling
+/// resistance drive the speed, the bicycle model the heading, and the position moves along the
+/// heading, integrated by `params.integrator`. No scheme lets resistance or braking reverse the car
+/// within a step, and none lets the reverse command pass `max_reverse_speed`.
 [[nodiscard]] CarState integrateCar(const CarState& state, const InputFrame& input,
                                     const CarParams& params, double dt);
 

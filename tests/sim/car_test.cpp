@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "geometry/angle.hpp"
 
@@ -17,15 +18,44 @@ constexpr InputFrame kDown{false, true, false, false};
 constexpr InputFrame kLeft{false, false, true, false};
 constexpr InputFrame kRight{false, false, false, true};
 
-CarParams frictionless() {
+CarParams frictionless(CarIntegrator integrator = CarIntegrator::kSemiImplicitEuler) {
   CarParams p;
   p.drag = 0.0;
   p.rolling_resistance = 0.0;
+  p.integrator = integrator;
   return p;
 }
 
-TEST(Car, StraightLineConstantAccelerationMatchesTheDiscreteClosedForm) {
-  const CarParams p = frictionless();
+CarParams withIntegrator(CarIntegrator integrator) {
+  CarParams p;
+  p.integrator = integrator;
+  return p;
+}
+
+// Properties every integrator must keep (the speed law's stops and caps, the steering, the exact
+// axis directions, the heading wrap), run once per scheme.
+class EveryIntegrator : public ::testing::TestWithParam<CarIntegrator> {};
+
+INSTANTIATE_TEST_SUITE_P(Car, EveryIntegrator,
+                         ::testing::Values(CarIntegrator::kSemiImplicitEuler,
+                                           CarIntegrator::kExplicitEuler, CarIntegrator::kRk4,
+                                           CarIntegrator::kArcRk4),
+                         [](const ::testing::TestParamInfo<CarIntegrator>& info) {
+                           switch (info.param) {
+                             case CarIntegrator::kSemiImplicitEuler:
+                               return std::string("SemiImplicitEuler");
+                             case CarIntegrator::kExplicitEuler:
+                               return std::string("ExplicitEuler");
+                             case CarIntegrator::kRk4:
+                               return std::string("Rk4");
+                             case CarIntegrator::kArcRk4:
+                               return std::string("ArcRk4");
+                           }
+                           return std::string("Unknown");
+                         });
+
+TEST(Car, SemiImplicitEulerUnderConstantAccelerationMatchesItsDiscreteClosedForm) {
+  const CarParams p = frictionless(CarIntegrator::kSemiImplicitEuler);
   CarState s;
   s.speed = 2.0;
   const double v0 = s.speed, a = p.engine_accel;
@@ -44,8 +74,8 @@ TEST(Car, StraightLineConstantAccelerationMatchesTheDiscreteClosedForm) {
   }
 }
 
-TEST(Car, ExactAxisDirectionSurvivesStraightDriving) {
-  CarParams p;
+TEST_P(EveryIntegrator, ExactAxisDirectionSurvivesStraightDriving) {
+  const CarParams p = withIntegrator(GetParam());
   CarState s;
   s.heading = wrapRadians(90.0 * std::numbers::pi / 180.0);
   s.direction = unitFromDegrees(90.0);
@@ -56,8 +86,8 @@ TEST(Car, ExactAxisDirectionSurvivesStraightDriving) {
   EXPECT_GT(s.position.y(), 10.0);
 }
 
-TEST(Car, ConstantSteerCirclesWithTheBicycleRadius) {
-  CarParams p = frictionless();
+TEST(Car, SemiImplicitEulerCirclesOnTheChordPolygonOfTheBicycleRadius) {
+  CarParams p = frictionless(CarIntegrator::kSemiImplicitEuler);
   p.lock_speed = 1e12;  // no narrowing at 10 m/s
   p.max_steer = 0.3;
   CarState s;
@@ -93,8 +123,8 @@ TEST(Car, ConstantSteerCirclesWithTheBicycleRadius) {
   EXPECT_LT((s.position - start).norm(), s.speed * kDt);
 }
 
-TEST(Car, BrakingStopsExactlyAtZeroThenReverses) {
-  CarParams p;
+TEST_P(EveryIntegrator, BrakingStopsExactlyAtZeroThenReverses) {
+  const CarParams p = withIntegrator(GetParam());
   CarState s;
   s.speed = 5.0;
   int stopped_at = -1;
@@ -124,8 +154,8 @@ TEST(Car, BrakingStopsExactlyAtZeroThenReverses) {
   EXPECT_GT(s.speed, 0.0);
 }
 
-TEST(Car, BothPedalsBrakeAndCoastingNeverFlipsTheSign) {
-  CarParams p;
+TEST_P(EveryIntegrator, BothPedalsBrakeAndCoastingNeverFlipsTheSign) {
+  const CarParams p = withIntegrator(GetParam());
   CarState s;
   s.speed = 30.0;
   for (int i = 0; i < 1000; ++i) {
@@ -144,8 +174,8 @@ TEST(Car, BothPedalsBrakeAndCoastingNeverFlipsTheSign) {
   EXPECT_EQ(rest.position, s.position);
 }
 
-TEST(Car, ReverseSpeedIsCapped) {
-  for (const CarParams& p : {CarParams{}, frictionless()}) {
+TEST_P(EveryIntegrator, ReverseSpeedIsCapped) {
+  for (const CarParams& p : {withIntegrator(GetParam()), frictionless(GetParam())}) {
     CarState s;
     for (int i = 0; i < 120 * 30; ++i) {
       s = integrateCar(s, kDown, p, kDt);
@@ -157,8 +187,8 @@ TEST(Car, ReverseSpeedIsCapped) {
   }
 }
 
-TEST(Car, HeadingStaysWrappedOverAMillionStepsOfCircling) {
-  CarParams p;
+TEST_P(EveryIntegrator, HeadingStaysWrappedOverAMillionStepsOfCircling) {
+  const CarParams p = withIntegrator(GetParam());
   CarState s;
   s.speed = 12.0;
   for (int i = 0; i < 1000000; ++i) {
@@ -172,8 +202,8 @@ TEST(Car, HeadingStaysWrappedOverAMillionStepsOfCircling) {
   EXPECT_LT(s.position.norm(), 100.0);  // still circling near the start
 }
 
-TEST(Car, SteeringIsRateLimitedAndNarrowsWithSpeed) {
-  CarParams p;
+TEST_P(EveryIntegrator, SteeringIsRateLimitedAndNarrowsWithSpeed) {
+  const CarParams p = withIntegrator(GetParam());
   EXPECT_EQ(steeringLock(p, 0.0), p.max_steer);
   EXPECT_DOUBLE_EQ(steeringLock(p, p.lock_speed), 0.5 * p.max_steer);
   EXPECT_DOUBLE_EQ(steeringLock(p, -p.lock_speed), 0.5 * p.max_steer);

@@ -1,0 +1,165 @@
+#include "sim/car_schemes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/angle.hpp"
+
+namespace cardemo {
+namespace {
+
+// Bicycle-model curvature of the path, 1/m: yaw rate = v tan(delta) / L (Rajamani, "Vehicle
+// Dynamics and Control", 2nd ed., sec. 2.2), so heading changes by tan(delta) / L per metre.
+double curvatureOf(const CarState& s, const CarParams& p) {
+  return std::tan(s.steer) / p.wheelbase;
+}
+
+// The heading's unit vector; the stored one when the angle has not moved, so that an exact
+// axis-aligned direction from unitFromDegrees survives straight driving.
+Eigen::Vector2d directionAt(const CarState& start, double heading) {
+  return heading == start.heading ? start.direction : unitFromRadians(heading);
+}
+
+// Wraps the new heading and recomputes the direction only when the angle changed.
+void setHeading(CarState& next, const CarState& start, double unwrapped) {
+  next.heading = unwrapped == start.heading ? start.heading : wrapRadians(unwrapped);
+  next.direction = directionAt(start, next.heading);
+}
+
+}  // namespace
+
+double SpeedLaw::rate(double v) const {
+  if (travel == 0.0) return 0.0;
+  const double push = reversing && v <= reverse_limit ? 0.0 : command;
+  const double a = push - drag * v * std::abs(v) - rolling * travel;
+  // Stopped (or at rest and about to move): nothing here can push the car against its travel.
+  if (travel * v <= 0.0 && travel * a <= 0.0) return 0.0;
+  return a;
+}
+
+double SpeedLaw::alongTravel(double v) const {
+  if (travel > 0.0) return std::max(v, 0.0);
+  if (travel < 0.0) return std::min(v, 0.0);
+  return 0.0;
+}
+
+double SpeedLaw::endSpeed(double v) const {
+  const double along = alongTravel(v);
+  return capped ? std::max(along, reverse_limit) : along;
+}
+
+SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params) {
+  SpeedLaw law;
+  law.drag = params.drag;
+  law.rolling = params.rolling_resistance;
+  law.travel = speed > 0.0 ? 1.0 : (speed < 0.0 ? -1.0 : 0.0);
+  const double brake = -law.travel * params.brake_decel;  // toward zero
+  // The same modes as the semi-implicit update (car.cpp, commandedSpeed).
+  if (input.up && input.down) {
+    law.command = brake;
+  } else if (input.up) {
+    if (speed < 0.0) {
+      law.command = brake;
+    } else {
+      law.command = params.engine_accel;
+      law.travel = 1.0;
+    }
+  } else if (input.down) {
+    if (speed > 0.0) {
+      law.command = brake;
+    } else if (speed > -params.max_reverse_speed) {
+      law.command = -params.reverse_accel;
+      law.travel = -1.0;
+      law.reversing = true;
+      law.capped = true;
+      law.reverse_limit = -params.max_reverse_speed;
+    }
+    // Already beyond the reverse limit (an initial speed from the scene): leave it to drag.
+  }
+  return law;
+}
+
+CarState stepExplicitEuler(const CarState& steered, const SpeedLaw& law, const CarParams& params,
+                           double dt) {
+  CarState next = steered;
+  const double v = steered.speed;
+  next.speed = law.endSpeed(v + law.rate(v) * dt);
+  setHeading(next, steered, steered.heading + v * curvatureOf(steered, params) * dt);
+  const double distance = v * dt;
+  next.position.x() = steered.position.x() + steered.direction.x() * distance;
+  next.position.y() = steered.position.y() + steered.direction.y() * distance;
+  return next;
+}
+
+CarState stepRk4(const CarState& steered, const SpeedLaw& law, const CarParams& params, double dt) {
+  // Classical RK4 (Hairer, Norsett and Wanner, "Solving Ordinary Differential Equations I",
+  // sec. II.1, table 1.2) on x' = v cos(h), y' = v sin(h), h' = v k, v' = law.rate(v). Stage speeds
+  // are kept along the travel so that a stage never drives the car backwards through a stop.
+  const double k = curvatureOf(steered, params);
+  const double h0 = steered.heading, v1 = steered.speed;
+  const Eigen::Vector2d d1 = steered.direction;
+  const double a1 = law.rate(v1);
+
+  const double v2 = law.alongTravel(v1 + 0.5 * dt * a1);
+  const double h2 = h0 + 0.5 * dt * (v1 * k);
+  const Eigen::Vector2d d2 = directionAt(steered, h2);
+  const double a2 = law.rate(v2);
+
+  const double v3 = law.alongTravel(v1 + 0.5 * dt * a2);
+  const double h3 = h0 + 0.5 * dt * (v2 * k);
+  const Eigen::Vector2d d3 = directionAt(steered, h3);
+  const double a3 = law.rate(v3);
+
+  const double v4 = law.alongTravel(v1 + dt * a3);
+  const double h4 = h0 + dt * (v3 * k);
+  const Eigen::Vector2d d4 = directionAt(steered, h4);
+  const double a4 = law.rate(v4);
+
+  const double w = dt / 6.0;
+  CarState next = steered;
+  next.speed = law.endSpeed(v1 + w * (a1 + 2.0 * a2 + 2.0 * a3 + a4));
+  setHeading(next, steered, h0 + w * ((v1 + 2.0 * v2 + 2.0 * v3 + v4) * k));
+  next.position.x() = steered.position.x() +
+                      w * (v1 * d1.x() + 2.0 * v2 * d2.x() + 2.0 * v3 * d3.x() + v4 * d4.x());
+  next.position.y() = steered.position.y() +
+                      w * (v1 * d1.y() + 2.0 * v2 * d2.y() + 2.0 * v3 * d3.y() + v4 * d4.y());
+  return next;
+}
+
+CarState stepArcRk4(const CarState& steered, const SpeedLaw& law, const CarParams& params,
+                    double dt) {
+  // RK4 on s' = v, v' = law.rate(v): the speed law does not depend on position or heading.
+  const double v1 = steered.speed;
+  const double a1 = law.rate(v1);
+  const double v2 = law.alongTravel(v1 + 0.5 * dt * a1);
+  const double a2 = law.rate(v2);
+  const double v3 = law.alongTravel(v1 + 0.5 * dt * a2);
+  const double a3 = law.rate(v3);
+  const double v4 = law.alongTravel(v1 + dt * a3);
+  const double a4 = law.rate(v4);
+  const double w = dt / 6.0;
+  const double distance = w * (v1 + 2.0 * v2 + 2.0 * v3 + v4);
+
+  CarState next = steered;
+  next.speed = law.endSpeed(v1 + w * (a1 + 2.0 * a2 + 2.0 * a3 + a4));
+  // With the steering held the curvature is constant, so whatever the speed profile the car runs
+  // along one circle (or line) and only the distance along it matters. An arc of length s turning
+  // by phi has the chord s sin(phi/2) / (phi/2) along the start heading turned by phi/2 (the exact
+  // update for constant curvature: Thrun, Burgard and Fox, "Probabilistic Robotics", 2005,
+  // sec. 5.3.3, eq. 5.9, written in chord form so that it stays accurate as phi -> 0).
+  const double turn = distance * curvatureOf(steered, params);
+  setHeading(next, steered, steered.heading + turn);
+  Eigen::Vector2d chord = steered.direction * distance;
+  if (turn != 0.0) {
+    const double half = 0.5 * turn;
+    const double c = std::cos(half), s = std::sin(half);
+    const double length = distance * (s / half);
+    const Eigen::Vector2d& u = steered.direction;
+    chord = Eigen::Vector2d(u.x() * c - u.y() * s, u.x() * s + u.y() * c) * length;
+  }
+  next.position.x() = steered.position.x() + chord.x();
+  next.position.y() = steered.position.y() + chord.y();
+  return next;
+}
+
+}  // namespace cardemo

@@ -1,0 +1,48 @@
+#pragma once
+/// The car's integrators other than semi-implicit Euler: the continuous speed law of one step and
+/// the explicit Euler, RK4 and exact-arc updates built on it (integrateCar picks one).
+
+#include "sim/car.hpp"
+#include "sim/input_frame.hpp"
+
+namespace cardemo {
+
+/// The speed ODE of one step with the inputs held: v' = command - drag v|v| - rolling * travel.
+/// The mode (throttle, brake, reverse, coast) is chosen once from the speed at the start of the
+/// step, as the semi-implicit update does; within the step the car stops at zero instead of
+/// reversing, and the reverse command switches off at -max_reverse_speed.
+struct SpeedLaw {
+  double command = 0.0;  ///< Driver's acceleration (throttle, brake or reverse), m/s^2, signed.
+  double travel = 0.0;   ///< Direction of travel over the step: +1, -1, or 0 (at rest and stays).
+  double drag = 0.0;     ///< Drag coefficient, 1/m.
+  double rolling = 0.0;  ///< Rolling resistance, m/s^2.
+  double reverse_limit = 0.0;  ///< Speed (m/s, <= 0) below which the reverse command is off.
+  bool reversing = false;      ///< True when `command` is the reverse command.
+  bool capped = false;         ///< True when the step's end speed is clamped to reverse_limit.
+
+  /// Acceleration at speed `v` (m/s^2); zero once the car has stopped against its travel.
+  [[nodiscard]] double rate(double v) const;
+  /// `v` clamped so that it never points against the direction of travel (m/s).
+  [[nodiscard]] double alongTravel(double v) const;
+  /// The speed at the end of a step: along the travel and within the reverse cap (m/s).
+  [[nodiscard]] double endSpeed(double v) const;
+};
+
+/// The speed law of one step from the speed at its start (m/s) and the keys held.
+[[nodiscard]] SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params);
+
+/// Explicit Euler: heading, position and speed all advance with the derivatives at the start of
+/// the step. `steered` is the state at the start with the step's steering angle already set.
+[[nodiscard]] CarState stepExplicitEuler(const CarState& steered, const SpeedLaw& law,
+                                         const CarParams& params, double dt);
+
+/// Classical fourth-order Runge-Kutta over (x, y, heading, speed) with the steering held.
+[[nodiscard]] CarState stepRk4(const CarState& steered, const SpeedLaw& law,
+                               const CarParams& params, double dt);
+
+/// Speed and distance travelled by RK4 over (distance, speed); the position then follows the exact
+/// circular arc of the step's constant curvature tan(steer) / wheelbase over that distance.
+[[nodiscard]] CarState stepArcRk4(const CarState& steered, const SpeedLaw& law,
+                                  const CarParams& params, double dt);
+
+}  // namespace cardemo
