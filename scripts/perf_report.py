@@ -284,7 +284,7 @@ def machine_text(r):
         pass
     return "\n".join([
         f"- CPU: {model or platform.processor()}, {ctx.get('num_cpus', '?')} cores at "
-        f"{ctx.get('mhz_per_cpu', '?')} MHz (as reported), caches: {caches}",
+        f"{ctx.get('mhz_per_cpu', '?')} MHz (as reported)" + (f", caches: {caches}" if caches else ""),
         f"- Load average at the start of the run: {ctx.get('load_avg', '?')} (the machine is "
         f"shared; times are CPU time, medians of the repetitions)",
         f"- Compiler: {compiler}; Release: `-O3 -DNDEBUG -ffp-contract=off -fno-fast-math`, no "
