@@ -129,7 +129,12 @@ Tolerance rotationTolerance(const RigidTransform& t, const Scene& scene) {
   tol.angle = 1e-14;
   tol.angle_per_frame = 1e-15;
   tol.speed = 1e-12 + kMaxSpeed * 4.0 * u / std::min(1.0, shortestEdge(scene));
-  tol.yaw_gain = std::tan(0.6) / 2.7;  // CarParams: max_steer / wheelbase
+  // CarParams: max_steer 0.6 rad, wheelbase 2.7 m, lock_speed 20 m/s. The lock m / (1 + (v/L)^2)
+  // changes by at most m/L * 2/sqrt(3) * 9/16 = 0.0195 rad per m/s (at v = L/sqrt(3)); the yaw
+  // rate v tan(steer) / wheelbase by tan(0.6)/2.7 = 0.25 per m/s directly, plus up to
+  // 60 m/s * 0.0195 / cos^2(0.6) / 2.7 = 0.64 through the lock.
+  tol.lock_gain = 0.02;
+  tol.yaw_gain = 1.0;
   return tol;
 }
 
@@ -148,12 +153,13 @@ struct ClassFigures {
     worst.speed = std::max(worst.speed, r.worst.speed);
   }
   int roundoff_stops = 0;  // runs stopped early by the known roundoff-speed cause
+  int corner_stops = 0;    // runs stopped early by the known wall-corner order cause
   void print(const char* name) const {
     std::printf(
         "[ %s ] %d runs, %lld frames, %zu hits; worst |dpos| %.3g m, |dangle| %.3g rad, "
-        "|dspeed| %.3g m/s; %d runs stopped at a roundoff speed\n",
+        "|dspeed| %.3g m/s; %d runs stopped at a roundoff speed, %d at a wall corner\n",
         name, runs, static_cast<long long>(frames), hits, worst.position, worst.angle, worst.speed,
-        roundoff_stops);
+        roundoff_stops, corner_stops);
   }
 };
 
@@ -174,6 +180,15 @@ void expectInvariant(const std::vector<Drive>& drives, const std::vector<RigidTr
         // accelerating. The runs agreed up to there; what follows is no longer comparable.
         ++figures.roundoff_stops;
         std::printf("  roundoff stop: %s under %s: %s\n", d.name.c_str(), t.describe().c_str(),
+                    r.divergence.c_str());
+        continue;
+      }
+      if (r.after_wall_corner && t.keepsAxes() && std::fmod(std::abs(t.rotate_deg), 180.0) != 0) {
+        // Known and reported (docs/robustness.md): a car that meets an x wall and a y wall in the
+        // same step has them resolved x first, then y; a quarter turn swaps the order, and the
+        // two velocity removals (each projected back onto the heading) do not commute.
+        ++figures.corner_stops;
+        std::printf("  wall-corner stop: %s under %s: %s\n", d.name.c_str(), t.describe().c_str(),
                     r.divergence.c_str());
         continue;
       }

@@ -74,7 +74,7 @@ std::string compareFrame(const World& a, const World& b, const RigidTransform& t
            number(dh) + " rad off, tolerance " + number(angle_tol) + ")";
   }
   const double ds = std::abs(cb.steer - t.turnSign() * ca.steer);
-  if (!(ds <= angle_tol)) {
+  if (!(ds <= angle_tol + tol.lock_gain * dv)) {
     return at + "steer: original " + number(ca.steer) + ", image " + number(cb.steer);
   }
   if (!(dv <= tol.speed)) {
@@ -98,6 +98,19 @@ bool roundoffSpeedSplit(const World& a, const World& b, double speed_tolerance) 
   return signOf(va) != signOf(vb) && std::abs(va) <= residue && std::abs(vb) <= residue;
 }
 
+// True when the car's bounds lie on an x wall and a y wall at once (walls clamp them exactly).
+bool inWallCorner(const World& w) {
+  if (!w.scene().bounds) return false;
+  const Aabb2 box = w.carBox().aabb();
+  const Aabb2& walls = *w.scene().bounds;
+  const double eps =
+      1e-9 * (1.0 + walls.max.cwiseAbs().maxCoeff() + walls.min.cwiseAbs().maxCoeff());
+  const auto near = [eps](double a, double b) { return std::abs(a - b) <= eps; };
+  const bool on_x = near(box.min.x(), walls.min.x()) || near(box.max.x(), walls.max.x());
+  const bool on_y = near(box.min.y(), walls.min.y()) || near(box.max.y(), walls.max.y());
+  return on_x && on_y;
+}
+
 }  // namespace
 
 LockstepResult runLockstep(const Scene& original, const RigidTransform& t,
@@ -108,6 +121,7 @@ LockstepResult runLockstep(const Scene& original, const RigidTransform& t,
   LockstepResult result;
   std::size_t hits_compared = 0;
   std::int64_t split_frame = -10;
+  std::int64_t corner_frame = -10;
   Budget budget;
   result.divergence = compareFrame(a, b, t, tolerance, hits_compared, result.worst, budget);
   for (const InputFrame& in : inputs) {
@@ -117,8 +131,12 @@ LockstepResult runLockstep(const Scene& original, const RigidTransform& t,
     ++result.frames;
     result.divergence = compareFrame(a, b, t, tolerance, hits_compared, result.worst, budget);
     if (roundoffSpeedSplit(a, b, tolerance.speed)) split_frame = a.frame();
+    if (inWallCorner(a) || inWallCorner(b)) corner_frame = a.frame();
   }
-  result.after_roundoff_speed = !result.divergence.empty() && a.frame() - split_frame <= 2;
+  const bool diverged = !result.divergence.empty();
+  result.after_roundoff_speed = diverged && a.frame() - split_frame <= 2;
+  result.after_wall_corner =
+      diverged && !result.after_roundoff_speed && a.frame() - corner_frame <= 2;
   result.hits = a.hits().size();
   result.hits_compared = hits_compared;
   result.game_over = a.gameOver();

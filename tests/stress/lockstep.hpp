@@ -19,7 +19,9 @@ struct Tolerance {
   double speed = 0.0;               ///< m/s (speed and the hits' impact speeds).
   /// Speed differences also grow the heading and position budgets by what they can explain:
   /// heading by |dv| * yaw_gain * dt, position by (|dv| + |v| * heading budget) * dt.
-  double yaw_gain = 0.0;  ///< Largest |tan(steer)| / wheelbase, 1/m.
+  double yaw_gain = 0.0;  ///< Heading rate error per m/s of speed error, 1/s per (m/s) per s.
+  /// Steering error per m/s of speed error (the lock narrows with speed), rad per m/s.
+  double lock_gain = 0.0;
 };
 
 /// Largest differences seen over a run (the figures the docs quote).
@@ -39,6 +41,9 @@ struct LockstepResult {
   /// not zero) that are both rounding residues (|v| <= max(kRoundoffSpeed, tolerance.speed)): a
   /// known cause, see docs/robustness.md ("Numerical stress").
   bool after_roundoff_speed = false;
+  /// Set when the divergence follows, within two frames, a step in which either car met two walls
+  /// at once (a corner): a known cause under quarter turns, see docs/robustness.md.
+  bool after_wall_corner = false;
   Deviation worst;                ///< Largest differences while the runs agreed.
   std::int64_t frames = 0;        ///< Frames compared.
   std::size_t hits = 0;           ///< Hits of the original run.
