@@ -71,7 +71,8 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
          std::to_string(s.skipped_queries) + " skipped: box unchanged), " +
          std::to_string(s.broadphase_candidates) + " candidates, " +
          std::to_string(s.narrowphase_tests) + " narrow-phase tests, " +
-         std::to_string(s.contacts) + " contacts, " + std::to_string(s.substeps) + " sub-steps\n";
+         std::to_string(s.contacts) + " contacts, " + std::to_string(s.substeps) + " sub-steps, " +
+         std::to_string(s.sweeps) + " sweeps\n";
   return out;
 }
 

@@ -11,6 +11,8 @@ namespace cardemo {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
+constexpr double kNoContact = 2.0;
 
 std::vector<StaticShape> collidersOf(const Scene& scene) {
   std::vector<StaticShape> out;
@@ -45,13 +47,15 @@ World::World(Scene scene, const WorldSettings& settings)
       settings_(settings),
       params_(paramsFor(settings, scene_.player)),
       colliders_(collidersOf(scene_)),
-      grid_(boundsOfAll(colliders_)),
+      collider_bounds_(boundsOfAll(colliders_)),
+      grid_(collider_bounds_),
       health_(scene_.player.health),
       touching_(colliders_.size(), 0) {
   car_.position = scene_.player.position;
   car_.heading = wrapRadians(scene_.player.heading_deg * (kPi / 180.0));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
   car_.speed = scene_.player.speed;
+  ++stats_.broadphase_builds;
 
   // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
   const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
@@ -94,6 +98,10 @@ void World::detect() {
     ++stats_.broadphase_queries;
     stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
   }
+  narrowPhase(box);
+}
+
+void World::narrowPhase(const Obb2& box) {
   detected_.clear();
   for (const std::uint32_t id : candidates_) {
     ++stats_.narrowphase_tests;
@@ -156,6 +164,127 @@ void World::moveWithSubsteps(const CarState& start, const CarState& next) {
   stats_.substeps += n - 1;
 }
 
+double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
+                                  const Eigen::Vector2d& displacement) {
+  // One query with the box swept over the whole motion (start merged with end: a translating box
+  // stays inside the hull of its two ends).
+  const Aabb2 query = settings_.broad_phase_box == BroadPhaseBox::kTight
+                          ? box.aabb().merged(end_box.aabb())
+                          : box.rotationProofAabb().merged(end_box.rotationProofAabb());
+  grid_.query(query, candidates_);
+  last_query_box_ = query;
+  have_query_ = true;
+  have_detected_ = false;
+  ++stats_.broadphase_queries;
+  stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
+
+  const double limit = 0.5 * std::min(params_.length, params_.width);
+  const double length = std::sqrt(displacement.squaredNorm());
+  double first = kNoContact;
+  for (const std::uint32_t id : candidates_) {
+    ++stats_.sweeps;
+    const SweepResult2 r = sweepPlayer(box, displacement, colliders_[id]);
+    if (!r.hit) continue;
+    const double closing = r.normal.x() * displacement.x() + r.normal.y() * displacement.y();
+    double t = 0.0;
+    if (r.toi > 0.0) {
+      // Stop just past the first touch, leaving the resting penetration that the response expects
+      // (push-out leaves the same), so the contact reads as contact and is not pushed again. The
+      // extra travel is capped so that a grazing touch (tiny closing speed) cannot carry the car
+      // deep into something else met in the meantime.
+      const double rest = restingPenetration(box.center);
+      t = std::min(1.0, r.toi + std::min(rest / closing, 8.0 * rest / length));
+    } else {
+      // Already touching at the start (resting against it, or turned into it): sliding along it
+      // or leaving it is free, and the end pose's test handles it. Only a motion that would take
+      // the car deeper than half its smaller extent is stopped there, which keeps the push-out on
+      // the near side: a box is pushed back the way it came while it is less than half way in.
+      const double allowed = 0.5 * limit;
+      if (!(closing > allowed)) continue;
+      t = allowed / closing;
+    }
+    first = std::min(first, t);
+  }
+  return first;
+}
+
+void World::moveContinuous(const CarState& start, const CarState& next) {
+  const double limit = 0.5 * std::min(params_.length, params_.width);
+  const double travel = std::abs(next.speed) / settings_.hz;
+  const double turn = std::abs(wrapRadians(next.heading - start.heading));
+  // The far corners sweep an arc of the half-diagonal times the turn.
+  const double arc =
+      turn * std::sqrt(0.25 * (params_.length * params_.length + params_.width * params_.width));
+  if (travel <= limit && arc <= limit) {
+    // Slow step: the discrete test is exact enough (nothing at least the car's smaller half
+    // extent thick can be skipped) and costs one query at most.
+    car_ = next;
+    detect();
+    return;
+  }
+  // Turning fast: sub-steps in which the corners sweep at most half the bound, each one turned in
+  // place first and then translated along the new heading (the integrator's own order: the new
+  // heading, then the position along it), so every translation is swept exactly.
+  std::int64_t n = 1;
+  if (arc > 0.5 * limit) {
+    n = static_cast<std::int64_t>(std::min(std::ceil(arc / (0.5 * limit)), 1048576.0));
+  }
+  const double dh = wrapRadians(next.heading - start.heading);
+  CarState pose = start;
+  for (std::int64_t i = 1; i <= n; ++i) {
+    CarState target = next;
+    if (i < n) {
+      const double f = static_cast<double>(i) / static_cast<double>(n);
+      target.position.x() = start.position.x() + (next.position.x() - start.position.x()) * f;
+      target.position.y() = start.position.y() + (next.position.y() - start.position.y()) * f;
+      target.heading = wrapRadians(start.heading + dh * f);
+      target.direction = unitFromRadians(target.heading);
+    }
+    CarState turned = pose;
+    turned.heading = target.heading;
+    turned.direction = target.direction;
+    const Eigen::Vector2d displacement = target.position - turned.position;
+    const Obb2 box = cardemo::carBox(turned, params_);
+    const Obb2 end_box = cardemo::carBox(target, params_);
+    const double t = sweepToFirstContact(box, end_box, displacement);
+    if (t != kNoContact) {
+      // The rest of the step is dropped, as the sub-stepped scheme does at its first contact.
+      car_ = next;
+      car_.heading = turned.heading;
+      car_.direction = turned.direction;
+      car_.position = t == 1.0 ? target.position : turned.position + displacement * t;
+      stats_.substeps += i - 1;
+      detectWithinSweep(carBox());
+      return;
+    }
+    pose = target;
+  }
+  stats_.substeps += n - 1;
+  // No new contact on the way: the end pose's contacts (sliding along something, or pressed into
+  // it by less than the bound) are tested at the end pose.
+  car_ = next;
+  detectWithinSweep(carBox());
+}
+
+void World::detectWithinSweep(const Obb2& box) {
+  const Aabb2 query =
+      settings_.broad_phase_box == BroadPhaseBox::kTight ? box.aabb() : box.rotationProofAabb();
+  if (!last_query_box_.contains(query)) {
+    detect();
+    return;
+  }
+  // Inside the swept query box, the candidates are the swept ones whose bounds meet this box's
+  // query: exactly what a fresh query returns (same test, same order), without running one.
+  std::size_t kept = 0;
+  for (const std::uint32_t id : candidates_) {
+    if (collider_bounds_[id].overlaps(query)) candidates_[kept++] = id;
+  }
+  candidates_.resize(kept);
+  last_query_box_ = query;
+  stats_.broadphase_candidates += static_cast<std::int64_t>(kept);
+  narrowPhase(box);
+}
+
 void World::resolveContacts() {
   for (int pass = 0; pass < settings_.max_push_iterations && !detected_.empty(); ++pass) {
     const ActiveContact* deepest = &detected_.front();
@@ -211,7 +340,18 @@ void World::step(const InputFrame& input) {
   previous_contacts_.swap(contacts_);
   contacts_.clear();
   contact_speed_.clear();
-  moveWithSubsteps(start, next);
+  switch (settings_.collision) {
+    case CollisionDetection::kDiscrete:
+      car_ = next;
+      detect();
+      break;
+    case CollisionDetection::kSubstepped:
+      moveWithSubsteps(start, next);
+      break;
+    case CollisionDetection::kContinuous:
+      moveContinuous(start, next);
+      break;
+  }
   mergeDetected();
   resolveContacts();
   recordHits();
