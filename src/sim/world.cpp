@@ -36,8 +36,15 @@ CarParams paramsFor(const WorldSettings& settings, const PlayerStart& player) {
   return p;
 }
 
+// Bitwise-equal boxes and AABBs, compared as plain scalars (Eigen's == reduces through a mask).
 bool sameBox(const Obb2& a, const Obb2& b) {
-  return a.center == b.center && a.axis == b.axis && a.half == b.half;
+  return a.center.x() == b.center.x() && a.center.y() == b.center.y() && a.axis.x() == b.axis.x() &&
+         a.axis.y() == b.axis.y() && a.half.x() == b.half.x() && a.half.y() == b.half.y();
+}
+
+bool sameAabb(const Aabb2& a, const Aabb2& b) {
+  return a.min.x() == b.min.x() && a.min.y() == b.min.y() && a.max.x() == b.max.x() &&
+         a.max.y() == b.max.y();
 }
 
 }  // namespace
@@ -56,6 +63,8 @@ World::World(Scene scene, const WorldSettings& settings)
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
   car_.speed = scene_.player.speed;
   ++stats_.broadphase_builds;
+  half_min_extent_ = 0.5 * std::min(params_.length, params_.width);
+  half_diagonal_ = 0.5 * std::sqrt(params_.length * params_.length + params_.width * params_.width);
 
   // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
   const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
@@ -83,12 +92,17 @@ Obb2 World::carBox() const {
 
 void World::detect() {
   const Obb2 box = carBox();
-  const Aabb2 query =
-      settings_.broad_phase_box == BroadPhaseBox::kTight ? box.aabb() : box.rotationProofAabb();
-  if (have_query_ && query == last_query_box_) {
+  // Same pose as the last narrow phase: its query box and its answer still hold (narrowPhase
+  // always runs right after last_query_box_ is set to that pose's query box).
+  if (have_detected_ && sameBox(box, detected_box_)) {
     ++stats_.skipped_queries;
-    // Same pose as the last narrow phase: its answer still holds.
-    if (have_detected_ && sameBox(box, detected_box_)) return;
+    return;
+  }
+  const Aabb2 bounds = box.aabb();
+  const Aabb2 query =
+      settings_.broad_phase_box == BroadPhaseBox::kTight ? bounds : box.rotationProofAabb();
+  if (have_query_ && sameAabb(query, last_query_box_)) {
+    ++stats_.skipped_queries;
     // Reused candidates still feed the narrow phase, so they are counted as candidates again.
     stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
   } else {
@@ -98,11 +112,12 @@ void World::detect() {
     ++stats_.broadphase_queries;
     stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
   }
-  narrowPhase(box);
+  narrowPhase(box, bounds);
 }
 
-void World::narrowPhase(const Obb2& box) {
+void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
   detected_.clear();
+  detected_bounds_ = bounds;
   for (const std::uint32_t id : candidates_) {
     ++stats_.narrowphase_tests;
     const SatResult2 r = collidePlayer(box, colliders_[id]);
@@ -113,6 +128,7 @@ void World::narrowPhase(const Obb2& box) {
 }
 
 void World::mergeDetected() {
+  if (detected_.empty()) return;
   const std::size_t first_new = contacts_.size();
   for (const ActiveContact& c : detected_) {
     const bool known =
@@ -178,7 +194,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
   ++stats_.broadphase_queries;
   stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
 
-  const double limit = 0.5 * std::min(params_.length, params_.width);
+  const double limit = half_min_extent_;
   const double length = std::sqrt(displacement.squaredNorm());
   double first = kNoContact;
   for (const std::uint32_t id : candidates_) {
@@ -209,12 +225,13 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
 }
 
 void World::moveContinuous(const CarState& start, const CarState& next) {
-  const double limit = 0.5 * std::min(params_.length, params_.width);
+  const double limit = half_min_extent_;
   const double travel = std::abs(next.speed) / settings_.hz;
-  const double turn = std::abs(wrapRadians(next.heading - start.heading));
+  // The turn within the step (both headings are wrapped, so the raw difference is within 2 pi).
+  double turn = std::abs(next.heading - start.heading);
+  if (turn > kPi) turn = 2.0 * kPi - turn;
   // The far corners sweep an arc of the half-diagonal times the turn.
-  const double arc =
-      turn * std::sqrt(0.25 * (params_.length * params_.length + params_.width * params_.width));
+  const double arc = turn * half_diagonal_;
   if (travel <= limit && arc <= limit) {
     // Slow step: the discrete test is exact enough (nothing at least the car's smaller half
     // extent thick can be skipped) and costs one query at most.
@@ -267,8 +284,9 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
 }
 
 void World::detectWithinSweep(const Obb2& box) {
+  const Aabb2 bounds = box.aabb();
   const Aabb2 query =
-      settings_.broad_phase_box == BroadPhaseBox::kTight ? box.aabb() : box.rotationProofAabb();
+      settings_.broad_phase_box == BroadPhaseBox::kTight ? bounds : box.rotationProofAabb();
   if (!last_query_box_.contains(query)) {
     detect();
     return;
@@ -282,7 +300,7 @@ void World::detectWithinSweep(const Obb2& box) {
   candidates_.resize(kept);
   last_query_box_ = query;
   stats_.broadphase_candidates += static_cast<std::int64_t>(kept);
-  narrowPhase(box);
+  narrowPhase(box, bounds);
 }
 
 void World::resolveContacts() {
@@ -301,13 +319,17 @@ void World::resolveContacts() {
     detect();
     mergeDetected();
   }
-  if (scene_.bounds && keepInsideWalls(car_, params_, *scene_.bounds)) {
+  // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
+  // keepInsideWalls would not move the car, so it is not called.
+  if (scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
+      keepInsideWalls(car_, params_, *scene_.bounds)) {
     detect();
     mergeDetected();
   }
 }
 
 void World::recordHits() {
+  if (contacts_.empty() && previous_contacts_.empty()) return;  // the common case: nothing to do
   // Insertion sort by collider (a handful of contacts): hits within a frame come in index order
   // and the state hash sees the touching set in a fixed order.
   for (std::size_t i = 1; i < contacts_.size(); ++i) {

@@ -131,10 +131,13 @@ class World {
   std::vector<double> contact_speed_;    // closing speed of contacts_[k] when first detected
   std::vector<ActiveContact> detected_;  // contacts at the current pose (last detect())
   Obb2 detected_box_;                    // player box that detected_ belongs to
+  Aabb2 detected_bounds_;                // its tight bounds
+  double half_min_extent_ = 0.0;         // half the car's smaller side: the fast-motion bound, m
+  double half_diagonal_ = 0.0;           // centre-to-corner distance, m
   bool have_detected_ = false;
 
   void detect();
-  void narrowPhase(const Obb2& box);
+  void narrowPhase(const Obb2& box, const Aabb2& bounds);
   void detectWithinSweep(const Obb2& box);
   void mergeDetected();
   void moveWithSubsteps(const CarState& start, const CarState& next);
