@@ -174,6 +174,7 @@ void World::moveWithSubsteps(const CarState& start, const CarState& next) {
     detect();
     if (!detected_.empty()) {
       stats_.substeps += i - 1;
+      contact_fraction_ = static_cast<double>(i) / static_cast<double>(n);
       return;
     }
   }
@@ -197,6 +198,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
   const double limit = half_min_extent_;
   const double length = std::sqrt(displacement.squaredNorm());
   double first = kNoContact;
+  first_toi_ = kNoContact;
   for (const std::uint32_t id : candidates_) {
     ++stats_.sweeps;
     const SweepResult2 r = sweepPlayer(box, displacement, colliders_[id]);
@@ -210,6 +212,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
       // deep into something else met in the meantime.
       const double rest = restingPenetration(box.center);
       t = std::min(1.0, r.toi + std::min(rest / closing, 8.0 * rest / length));
+      first_toi_ = std::min(first_toi_, r.toi);
     } else {
       // Already touching at the start (resting against it, or turned into it): sliding along it
       // or leaving it is free, and the end pose's test handles it. Only a motion that would take
@@ -218,6 +221,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
       const double allowed = 0.5 * limit;
       if (!(closing > allowed)) continue;
       t = allowed / closing;
+      first_toi_ = std::min(first_toi_, t);
     }
     first = std::min(first, t);
   }
@@ -271,6 +275,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
       car_.direction = turned.direction;
       car_.position = t == 1.0 ? target.position : turned.position + displacement * t;
       stats_.substeps += i - 1;
+      contact_fraction_ = (static_cast<double>(i - 1) + first_toi_) / static_cast<double>(n);
       detectWithinSweep(carBox());
       return;
     }
@@ -347,7 +352,7 @@ void World::recordHits() {
                                       static_cast<double>(settings_.damage_max));
     const int damage = static_cast<int>(clamped);
     health_ = std::max(0, health_ - damage);
-    hits_.push_back({frame_, id, colliderId(id), speed, damage});
+    hits_.push_back({frame_, id, colliderId(id), speed, damage, contact_fraction_});
   }
   for (const ActiveContact& c : previous_contacts_) touching_[c.collider] = 0;
   for (const ActiveContact& c : contacts_) touching_[c.collider] = 1;
@@ -362,6 +367,7 @@ void World::step(const InputFrame& input) {
   previous_contacts_.swap(contacts_);
   contacts_.clear();
   contact_speed_.clear();
+  contact_fraction_ = 1.0;
   switch (settings_.collision) {
     case CollisionDetection::kDiscrete:
       car_ = next;

@@ -45,6 +45,8 @@ struct HitEvent {
   std::string id;              ///< The collider's id.
   double speed = 0.0;          ///< Closing speed along the contact normal at impact, m/s.
   int damage = 0;              ///< Health taken.
+  double step_fraction = 1.0;  ///< Where in the step the contact was found: 1 = at the end pose;
+                               ///< less for a sub-step or a swept time of impact.
 };
 
 /// Work done so far (the summary's `stats`).
@@ -132,6 +134,8 @@ class World {
   std::vector<ActiveContact> detected_;  // contacts at the current pose (last detect())
   Obb2 detected_box_;                    // player box that detected_ belongs to
   Aabb2 detected_bounds_;                // its tight bounds
+  double contact_fraction_ = 1.0;        // fraction of this step at which contact was found
+  double first_toi_ = 0.0;               // earliest time of impact of the last sweep
   double half_min_extent_ = 0.0;         // half the car's smaller side: the fast-motion bound, m
   double half_diagonal_ = 0.0;           // centre-to-corner distance, m
   bool have_detected_ = false;
