@@ -54,16 +54,17 @@ Scene sceneFor(const Target& t, double heading_deg, double speed) {
 // Drives into the target and checks every frame: never deeper than the resting margin allows,
 // the centre never on the far side; a hit on the target.
 std::string driveInto(const Target& target, double heading_deg, double speed, double hz,
-                      CollisionDetection mode, const InputFrame& input, int frames) {
+                      CollisionDetection mode, const InputFrame& input, int frames,
+                      const Eigen::Vector2d& offset = Eigen::Vector2d::Zero()) {
   WorldSettings settings;
   settings.hz = hz;
   settings.collision = mode;
-  World world(sceneFor(target, heading_deg, speed), settings);
+  World world(test::translated(sceneFor(target, heading_deg, speed), offset), settings);
   std::ostringstream why;
   for (int f = 0; f < frames; ++f) {
     world.step(input);
-    const double side = (world.car().position - target.centre).dot(target.normal);
-    const double sep = collidePlayer(world.carBox(), target.shape).separation;
+    const double side = (world.car().position - offset - target.centre).dot(target.normal);
+    const double sep = collidePlayer(world.carBox(), world.colliders()[0]).separation;
     if (side <= 0.0 || sep < -2.0 * kResting - 1e-9) {
       why << "frame " << world.frame() << ": centre " << side << " m in front of the target, sep "
           << sep;
@@ -101,6 +102,29 @@ TEST(WorldContinuous, NoTunnellingAtAnySpeedPhaseRateOrAngle) {
     }
   }
   EXPECT_EQ(runs, 5 * 4 * 3 * 2 * 8 * 2);
+}
+
+TEST(WorldContinuous, NoTunnellingFarFromTheOrigin) {
+  // The same approaches 1e7 m out: the sweep works relative to the car, so nothing changes.
+  const Eigen::Vector2d far{1e7, -1e7};
+  for (const double hz : {30.0, 480.0}) {
+    for (const double speed : {300.0, 1000.0}) {
+      const double step = speed / hz;
+      for (int phase = 0; phase < 8; ++phase) {
+        for (const bool kerb : {true, false}) {
+          const double distance = 12.0 + step * (phase / 8.0);
+          const Target t =
+              kerb ? kerbAcross(37.0, 30.0, distance) : carAcross(37.0, 30.0, distance);
+          const int frames = static_cast<int>(std::ceil(40.0 / step)) + 3;
+          ASSERT_EQ(
+              driveInto(t, 37.0, speed, hz, CollisionDetection::kContinuous, kNone, frames, far),
+              "")
+              << (kerb ? "kerb" : "car") << " hz " << hz << " speed " << speed << " phase "
+              << phase;
+        }
+      }
+    }
+  }
 }
 
 TEST(WorldContinuous, NoTunnellingWhileReversing) {
