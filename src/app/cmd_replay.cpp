@@ -23,6 +23,7 @@ struct ReplayOptions {
   std::string trace_path;
   bool print_expect = false;
   BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;
+  CollisionDetection collision = CollisionDetection::kContinuous;
 };
 
 constexpr std::size_t kMaxHitsShown = 12;
@@ -71,7 +72,8 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
          std::to_string(s.skipped_queries) + " skipped: box unchanged), " +
          std::to_string(s.broadphase_candidates) + " candidates, " +
          std::to_string(s.narrowphase_tests) + " narrow-phase tests, " +
-         std::to_string(s.contacts) + " contacts, " + std::to_string(s.substeps) + " sub-steps\n";
+         std::to_string(s.contacts) + " contacts, " + std::to_string(s.substeps) + " sub-steps, " +
+         std::to_string(s.sweeps) + " sweeps\n";
   return out;
 }
 
@@ -88,6 +90,7 @@ int runReplayCommand(const ReplayOptions& options) {
   }
   WorldSettings settings = settingsForReplay(replay.value());
   settings.broad_phase_box = options.broad_phase_box;
+  settings.collision = options.collision;
   World world(std::move(scene).value(), settings);
 
   std::unique_ptr<AtomicStream> trace;
@@ -153,6 +156,15 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
                   "Player box for broad-phase queries: tight (default) or rotation-proof (the seed "
                   "demo's box around the circumscribed circle), to compare their candidate counts")
       ->transform(CLI::CheckedTransformer(boxes, CLI::ignore_case));
+  const std::map<std::string, CollisionDetection> modes{
+      {"continuous", CollisionDetection::kContinuous},
+      {"substepped", CollisionDetection::kSubstepped},
+      {"discrete", CollisionDetection::kDiscrete}};
+  sub->add_option("--collision", options->collision,
+                  "Fast-motion collision detection: continuous (default: swept to the time of "
+                  "impact), substepped (sub-poses half the car's width apart) or discrete (one "
+                  "test per step; fast cars tunnel)")
+      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
   sub->add_flag("--print-expect", options->print_expect,
                 "Print expectation lines that describe this run (to paste into the replay)");
   sub->callback([options, &exit_code] { exit_code = runReplayCommand(*options); });

@@ -6,6 +6,7 @@
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/sat_result.hpp"
+#include "geometry/sweep_result.hpp"
 
 namespace cardemo {
 
@@ -14,6 +15,11 @@ using StaticShape = std::variant<Obb2, ConvexPolygon>;
 
 /// SAT between the player's box (A) and a static shape (B); normal from the player to the shape.
 [[nodiscard]] SatResult2 collidePlayer(const Obb2& player, const StaticShape& shape);
+
+/// Swept SAT of the player's box (A) translating by `displacement` (world metres, t in [0, 1])
+/// against a static shape (B); normal from the player to the shape.
+[[nodiscard]] SweepResult2 sweepPlayer(const Obb2& player, const Eigen::Vector2d& displacement,
+                                       const StaticShape& shape);
 
 /// Tight bounds of a static shape.
 [[nodiscard]] Aabb2 boundsOf(const StaticShape& shape);

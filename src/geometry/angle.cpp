@@ -35,6 +35,9 @@ Eigen::Vector2d unitFromRadians(double radians) {
 }
 
 double wrapRadians(double radians) {
+  // Already in range (every step's heading, nearly always): remainder would return it unchanged,
+  // and it is the most expensive call of a step.
+  if (radians > -std::numbers::pi && radians <= std::numbers::pi) return radians;
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   double r = std::remainder(radians, kTwoPi);  // exact, in [-pi, pi]
   if (r <= -std::numbers::pi) r += kTwoPi;

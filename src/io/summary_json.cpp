@@ -40,7 +40,9 @@ nlohmann::json summaryJson(const World& world) {
         {"narrowphase_tests", s.narrowphase_tests},
         {"contacts", s.contacts},
         {"skipped_queries", s.skipped_queries},
-        {"substeps", s.substeps}}},
+        {"substeps", s.substeps},
+        {"sweeps", s.sweeps},
+        {"broadphase_builds", s.broadphase_builds}}},
   };
 }
 

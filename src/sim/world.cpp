@@ -11,6 +11,8 @@ namespace cardemo {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
+constexpr double kNoContact = 2.0;
 
 std::vector<StaticShape> collidersOf(const Scene& scene) {
   std::vector<StaticShape> out;
@@ -34,8 +36,15 @@ CarParams paramsFor(const WorldSettings& settings, const PlayerStart& player) {
   return p;
 }
 
+// Bitwise-equal boxes and AABBs, compared as plain scalars (Eigen's == reduces through a mask).
 bool sameBox(const Obb2& a, const Obb2& b) {
-  return a.center == b.center && a.axis == b.axis && a.half == b.half;
+  return a.center.x() == b.center.x() && a.center.y() == b.center.y() && a.axis.x() == b.axis.x() &&
+         a.axis.y() == b.axis.y() && a.half.x() == b.half.x() && a.half.y() == b.half.y();
+}
+
+bool sameAabb(const Aabb2& a, const Aabb2& b) {
+  return a.min.x() == b.min.x() && a.min.y() == b.min.y() && a.max.x() == b.max.x() &&
+         a.max.y() == b.max.y();
 }
 
 }  // namespace
@@ -45,13 +54,17 @@ World::World(Scene scene, const WorldSettings& settings)
       settings_(settings),
       params_(paramsFor(settings, scene_.player)),
       colliders_(collidersOf(scene_)),
-      grid_(boundsOfAll(colliders_)),
+      collider_bounds_(boundsOfAll(colliders_)),
+      grid_(collider_bounds_),
       health_(scene_.player.health),
       touching_(colliders_.size(), 0) {
   car_.position = scene_.player.position;
   car_.heading = wrapRadians(scene_.player.heading_deg * (kPi / 180.0));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
   car_.speed = scene_.player.speed;
+  ++stats_.broadphase_builds;
+  half_min_extent_ = 0.5 * std::min(params_.length, params_.width);
+  half_diagonal_ = 0.5 * std::sqrt(params_.length * params_.length + params_.width * params_.width);
 
   // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
   const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
@@ -79,12 +92,17 @@ Obb2 World::carBox() const {
 
 void World::detect() {
   const Obb2 box = carBox();
-  const Aabb2 query =
-      settings_.broad_phase_box == BroadPhaseBox::kTight ? box.aabb() : box.rotationProofAabb();
-  if (have_query_ && query == last_query_box_) {
+  // Same pose as the last narrow phase: its query box and its answer still hold (narrowPhase
+  // always runs right after last_query_box_ is set to that pose's query box).
+  if (have_detected_ && sameBox(box, detected_box_)) {
     ++stats_.skipped_queries;
-    // Same pose as the last narrow phase: its answer still holds.
-    if (have_detected_ && sameBox(box, detected_box_)) return;
+    return;
+  }
+  const Aabb2 bounds = box.aabb();
+  const Aabb2 query =
+      settings_.broad_phase_box == BroadPhaseBox::kTight ? bounds : box.rotationProofAabb();
+  if (have_query_ && sameAabb(query, last_query_box_)) {
+    ++stats_.skipped_queries;
     // Reused candidates still feed the narrow phase, so they are counted as candidates again.
     stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
   } else {
@@ -94,7 +112,12 @@ void World::detect() {
     ++stats_.broadphase_queries;
     stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
   }
+  narrowPhase(box, bounds);
+}
+
+void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
   detected_.clear();
+  detected_bounds_ = bounds;
   for (const std::uint32_t id : candidates_) {
     ++stats_.narrowphase_tests;
     const SatResult2 r = collidePlayer(box, colliders_[id]);
@@ -105,6 +128,7 @@ void World::detect() {
 }
 
 void World::mergeDetected() {
+  if (detected_.empty()) return;
   const std::size_t first_new = contacts_.size();
   for (const ActiveContact& c : detected_) {
     const bool known =
@@ -150,10 +174,138 @@ void World::moveWithSubsteps(const CarState& start, const CarState& next) {
     detect();
     if (!detected_.empty()) {
       stats_.substeps += i - 1;
+      contact_fraction_ = static_cast<double>(i) / static_cast<double>(n);
       return;
     }
   }
   stats_.substeps += n - 1;
+}
+
+double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
+                                  const Eigen::Vector2d& displacement) {
+  // One query with the box swept over the whole motion (start merged with end: a translating box
+  // stays inside the hull of its two ends).
+  const Aabb2 query = settings_.broad_phase_box == BroadPhaseBox::kTight
+                          ? box.aabb().merged(end_box.aabb())
+                          : box.rotationProofAabb().merged(end_box.rotationProofAabb());
+  grid_.query(query, candidates_);
+  last_query_box_ = query;
+  have_query_ = true;
+  have_detected_ = false;
+  ++stats_.broadphase_queries;
+  stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
+
+  const double limit = half_min_extent_;
+  const double length = std::sqrt(displacement.squaredNorm());
+  double first = kNoContact;
+  first_toi_ = kNoContact;
+  for (const std::uint32_t id : candidates_) {
+    ++stats_.sweeps;
+    const SweepResult2 r = sweepPlayer(box, displacement, colliders_[id]);
+    if (!r.hit) continue;
+    const double closing = r.normal.x() * displacement.x() + r.normal.y() * displacement.y();
+    double t = 0.0;
+    if (r.toi > 0.0) {
+      // Stop just past the first touch, leaving the resting penetration that the response expects
+      // (push-out leaves the same), so the contact reads as contact and is not pushed again. The
+      // extra travel is capped so that a grazing touch (tiny closing speed) cannot carry the car
+      // deep into something else met in the meantime.
+      const double rest = restingPenetration(box.center);
+      t = std::min(1.0, r.toi + std::min(rest / closing, 8.0 * rest / length));
+      first_toi_ = std::min(first_toi_, r.toi);
+    } else {
+      // Already touching at the start (resting against it, or turned into it): sliding along it
+      // or leaving it is free, and the end pose's test handles it. Only a motion that would take
+      // the car deeper than half its smaller extent is stopped there, which keeps the push-out on
+      // the near side: a box is pushed back the way it came while it is less than half way in.
+      const double allowed = 0.5 * limit;
+      if (!(closing > allowed)) continue;
+      t = allowed / closing;
+      first_toi_ = std::min(first_toi_, t);
+    }
+    first = std::min(first, t);
+  }
+  return first;
+}
+
+void World::moveContinuous(const CarState& start, const CarState& next) {
+  const double limit = half_min_extent_;
+  const double travel = std::abs(next.speed) / settings_.hz;
+  // The turn within the step (both headings are wrapped, so the raw difference is within 2 pi).
+  double turn = std::abs(next.heading - start.heading);
+  if (turn > kPi) turn = 2.0 * kPi - turn;
+  // The far corners sweep an arc of the half-diagonal times the turn.
+  const double arc = turn * half_diagonal_;
+  if (travel <= limit && arc <= limit) {
+    // Slow step: the discrete test is exact enough (nothing at least the car's smaller half
+    // extent thick can be skipped) and costs one query at most.
+    car_ = next;
+    detect();
+    return;
+  }
+  // Turning fast: sub-steps in which the corners sweep at most half the bound, each one turned in
+  // place first and then translated along the new heading (the integrator's own order: the new
+  // heading, then the position along it), so every translation is swept exactly.
+  std::int64_t n = 1;
+  if (arc > 0.5 * limit) {
+    n = static_cast<std::int64_t>(std::min(std::ceil(arc / (0.5 * limit)), 1048576.0));
+  }
+  const double dh = wrapRadians(next.heading - start.heading);
+  CarState pose = start;
+  for (std::int64_t i = 1; i <= n; ++i) {
+    CarState target = next;
+    if (i < n) {
+      const double f = static_cast<double>(i) / static_cast<double>(n);
+      target.position.x() = start.position.x() + (next.position.x() - start.position.x()) * f;
+      target.position.y() = start.position.y() + (next.position.y() - start.position.y()) * f;
+      target.heading = wrapRadians(start.heading + dh * f);
+      target.direction = unitFromRadians(target.heading);
+    }
+    CarState turned = pose;
+    turned.heading = target.heading;
+    turned.direction = target.direction;
+    const Eigen::Vector2d displacement = target.position - turned.position;
+    const Obb2 box = cardemo::carBox(turned, params_);
+    const Obb2 end_box = cardemo::carBox(target, params_);
+    const double t = sweepToFirstContact(box, end_box, displacement);
+    if (t != kNoContact) {
+      // The rest of the step is dropped, as the sub-stepped scheme does at its first contact.
+      car_ = next;
+      car_.heading = turned.heading;
+      car_.direction = turned.direction;
+      car_.position = t == 1.0 ? target.position : turned.position + displacement * t;
+      stats_.substeps += i - 1;
+      contact_fraction_ = (static_cast<double>(i - 1) + first_toi_) / static_cast<double>(n);
+      detectWithinSweep(carBox());
+      return;
+    }
+    pose = target;
+  }
+  stats_.substeps += n - 1;
+  // No new contact on the way: the end pose's contacts (sliding along something, or pressed into
+  // it by less than the bound) are tested at the end pose.
+  car_ = next;
+  detectWithinSweep(carBox());
+}
+
+void World::detectWithinSweep(const Obb2& box) {
+  const Aabb2 bounds = box.aabb();
+  const Aabb2 query =
+      settings_.broad_phase_box == BroadPhaseBox::kTight ? bounds : box.rotationProofAabb();
+  if (!last_query_box_.contains(query)) {
+    detect();
+    return;
+  }
+  // Inside the swept query box, the candidates are the swept ones whose bounds meet this box's
+  // query: exactly what a fresh query returns (same test, same order), without running one.
+  std::size_t kept = 0;
+  for (const std::uint32_t id : candidates_) {
+    if (collider_bounds_[id].overlaps(query)) candidates_[kept++] = id;
+  }
+  candidates_.resize(kept);
+  last_query_box_ = query;
+  stats_.broadphase_candidates += static_cast<std::int64_t>(kept);
+  narrowPhase(box, bounds);
 }
 
 void World::resolveContacts() {
@@ -172,13 +324,17 @@ void World::resolveContacts() {
     detect();
     mergeDetected();
   }
-  if (scene_.bounds && keepInsideWalls(car_, params_, *scene_.bounds)) {
+  // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
+  // keepInsideWalls would not move the car, so it is not called.
+  if (scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
+      keepInsideWalls(car_, params_, *scene_.bounds)) {
     detect();
     mergeDetected();
   }
 }
 
 void World::recordHits() {
+  if (contacts_.empty() && previous_contacts_.empty()) return;  // the common case: nothing to do
   // Insertion sort by collider (a handful of contacts): hits within a frame come in index order
   // and the state hash sees the touching set in a fixed order.
   for (std::size_t i = 1; i < contacts_.size(); ++i) {
@@ -196,7 +352,7 @@ void World::recordHits() {
                                       static_cast<double>(settings_.damage_max));
     const int damage = static_cast<int>(clamped);
     health_ = std::max(0, health_ - damage);
-    hits_.push_back({frame_, id, colliderId(id), speed, damage});
+    hits_.push_back({frame_, id, colliderId(id), speed, damage, contact_fraction_});
   }
   for (const ActiveContact& c : previous_contacts_) touching_[c.collider] = 0;
   for (const ActiveContact& c : contacts_) touching_[c.collider] = 1;
@@ -211,7 +367,19 @@ void World::step(const InputFrame& input) {
   previous_contacts_.swap(contacts_);
   contacts_.clear();
   contact_speed_.clear();
-  moveWithSubsteps(start, next);
+  contact_fraction_ = 1.0;
+  switch (settings_.collision) {
+    case CollisionDetection::kDiscrete:
+      car_ = next;
+      detect();
+      break;
+    case CollisionDetection::kSubstepped:
+      moveWithSubsteps(start, next);
+      break;
+    case CollisionDetection::kContinuous:
+      moveContinuous(start, next);
+      break;
+  }
   mergeDetected();
   resolveContacts();
   recordHits();

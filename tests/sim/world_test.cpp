@@ -162,7 +162,7 @@ TEST(World, FastCarDoesNotTunnelThroughAParkedCar) {
   EXPECT_EQ(world.hits()[0].id, "thin");
   EXPECT_GT(world.hits()[0].speed, 200.0);
   EXPECT_EQ(world.hits()[0].damage, WorldSettings{}.damage_max);
-  EXPECT_GT(world.stats().substeps, 0);
+  EXPECT_GT(world.stats().sweeps, 0);
   EXPECT_LE(world.carBox().aabb().max.x(), 60.0 - 0.9 + 1e-6);
 }
 
@@ -179,7 +179,7 @@ TEST(World, FastCarDoesNotTunnelThroughAThinObstacle) {
   ASSERT_EQ(world.hits().size(), 1u);
   EXPECT_EQ(world.hits()[0].id, "kerb");
   EXPECT_EQ(world.hits()[0].collider, 0u);
-  EXPECT_GT(world.stats().substeps, 0);
+  EXPECT_GT(world.stats().sweeps, 0);
 }
 
 TEST(World, ObstaclesAreIndexedAfterParkedCars) {

@@ -1,0 +1,111 @@
+// Work skipping, asserted with the stats counters on scripted drives (no timing): no query while
+// the box is unchanged, no narrow phase without a candidate, the broad phase built once, and a
+// stationary car costing nothing after frame 0.
+#include <gtest/gtest.h>
+
+#include "scene_builders.hpp"
+#include "sim/world.hpp"
+
+namespace cardemo {
+namespace {
+
+using test::parkedCar;
+using test::sceneWith;
+
+constexpr InputFrame kNone{};
+constexpr InputFrame kUp{true, false, false, false};
+constexpr InputFrame kBrake{false, true, false, false};
+
+TEST(WorldWork, StationaryCarCostsNothingAfterFrameZero) {
+  // Parked beside two cars (one touching): frame 0 queries and tests once; then, whatever the
+  // steering does, the box never changes and no query, candidate, test or sweep is added.
+  const Scene scene =
+      sceneWith({parkedCar("near", 0.0, 2.5, 0.0), parkedCar("touch", 4.5, 0.0, 0.0),
+                 parkedCar("far", 40.0, 0.0, 0.0)});
+  World world(scene);
+  const WorldStats first = world.stats();
+  EXPECT_EQ(first.broadphase_queries, 1);
+  EXPECT_EQ(first.narrowphase_tests, first.broadphase_candidates);
+  ASSERT_EQ(world.hits().size(), 1u);  // "touch", at frame 0
+  for (int f = 0; f < 1000; ++f) {
+    world.step(f % 200 < 100 ? InputFrame{false, false, true, false} : kNone);
+  }
+  const WorldStats& s = world.stats();
+  EXPECT_EQ(s.broadphase_queries, first.broadphase_queries);
+  EXPECT_EQ(s.broadphase_candidates, first.broadphase_candidates);
+  EXPECT_EQ(s.narrowphase_tests, first.narrowphase_tests);
+  EXPECT_EQ(s.sweeps, 0);
+  EXPECT_EQ(s.substeps, 0);
+  EXPECT_EQ(s.skipped_queries, first.skipped_queries + 1000);
+  EXPECT_EQ(world.hits().size(), 1u);
+  EXPECT_EQ(world.contacts().size(), 1u);  // still touching, counted as contact every frame
+}
+
+TEST(WorldWork, NoQueryWhileTheBoxIsUnchanged) {
+  // Drive, brake to a stop, wait: from the frame the car stops, queries stop too.
+  World world(sceneWith({parkedCar("x", 30.0, 5.0, 0.0)}));
+  for (int f = 0; f < 120; ++f) world.step(kUp);
+  std::int64_t frames_stopped = 0;
+  std::int64_t queries_when_stopped = -1;
+  for (int f = 0; f < 600; ++f) {
+    const Obb2 before = world.carBox();
+    const std::int64_t queries = world.stats().broadphase_queries;
+    const std::int64_t skipped = world.stats().skipped_queries;
+    world.step(kBrake.down && world.car().speed > 0.0 ? kBrake : kNone);
+    const Obb2 after = world.carBox();
+    const bool unchanged = before.center == after.center && before.axis == after.axis;
+    if (unchanged) {
+      ++frames_stopped;
+      ASSERT_EQ(world.stats().broadphase_queries, queries) << "frame " << world.frame();
+      ASSERT_EQ(world.stats().skipped_queries, skipped + 1) << "frame " << world.frame();
+      if (queries_when_stopped < 0) queries_when_stopped = queries;
+    } else {
+      ASSERT_EQ(world.stats().broadphase_queries, queries + 1) << "frame " << world.frame();
+    }
+  }
+  EXPECT_GT(frames_stopped, 300);
+  EXPECT_EQ(world.stats().broadphase_queries, queries_when_stopped);
+}
+
+TEST(WorldWork, NoNarrowPhaseWithoutACandidate) {
+  // Through a lot with hits, at normal and at high speed: every step's narrow-phase tests and
+  // sweeps are bounded by the candidates it counted, and a step without candidates tests nothing.
+  for (const double speed : {0.0, 400.0}) {
+    Scene scene = test::parkingLot(17);
+    scene.player.speed = speed;
+    scene.player.heading_deg = speed > 0.0 ? 90.0 : 0.0;  // fast: straight into a row
+    World world(scene);
+    std::int64_t empty_steps = 0;
+    for (const InputFrame& in : test::scriptedDrive(17, 3000)) {
+      const WorldStats before = world.stats();
+      world.step(in);
+      const WorldStats& s = world.stats();
+      const std::int64_t candidates = s.broadphase_candidates - before.broadphase_candidates;
+      const std::int64_t tests =
+          (s.narrowphase_tests - before.narrowphase_tests) + (s.sweeps - before.sweeps);
+      ASSERT_LE(tests, candidates) << "frame " << world.frame();
+      if (candidates == 0) {
+        ++empty_steps;
+        ASSERT_EQ(tests, 0) << "frame " << world.frame();
+      }
+    }
+    EXPECT_GT(empty_steps, 100) << speed;
+    EXPECT_GT(world.stats().narrowphase_tests, 0) << speed;
+    EXPECT_GT(world.hits().size(), 0u) << speed;
+    if (speed > 0.0) {
+      EXPECT_GT(world.stats().sweeps, 0);
+    }
+  }
+}
+
+TEST(WorldWork, BroadPhaseIsBuiltOnce) {
+  World world(test::parkingLot(19));
+  EXPECT_EQ(world.stats().broadphase_builds, 1);
+  for (const InputFrame& in : test::scriptedDrive(19, 5000)) world.step(in);
+  EXPECT_GT(world.hits().size(), 0u);
+  EXPECT_GT(world.stats().broadphase_queries, 1000);
+  EXPECT_EQ(world.stats().broadphase_builds, 1);
+}
+
+}  // namespace
+}  // namespace cardemo
