@@ -152,14 +152,11 @@ struct ClassFigures {
     worst.angle = std::max(worst.angle, r.worst.angle);
     worst.speed = std::max(worst.speed, r.worst.speed);
   }
-  int roundoff_stops = 0;  // runs stopped early by the known roundoff-speed cause
-  int corner_stops = 0;    // runs stopped early by the known wall-corner order cause
   void print(const char* name) const {
     std::printf(
         "[ %s ] %d runs, %lld frames, %zu hits; worst |dpos| %.3g m, |dangle| %.3g rad, "
-        "|dspeed| %.3g m/s; %d runs stopped at a roundoff speed, %d at a wall corner\n",
-        name, runs, static_cast<long long>(frames), hits, worst.position, worst.angle, worst.speed,
-        roundoff_stops, corner_stops);
+        "|dspeed| %.3g m/s\n",
+        name, runs, static_cast<long long>(frames), hits, worst.position, worst.angle, worst.speed);
   }
 };
 
@@ -174,24 +171,6 @@ void expectInvariant(const std::vector<Drive>& drives, const std::vector<RigidTr
           tolerance_is_translation(t) ? translationTolerance(t) : rotationTolerance(t, base);
       const LockstepResult r = runLockstep(base, t, d.settings, d.inputs, tol);
       figures.add(r);
-      if (r.after_roundoff_speed) {
-        // Known and reported (docs/robustness.md): a contact leaves a speed of ~1e-17 m/s whose
-        // sign differs between the runs, and the throttle brakes it for a step instead of
-        // accelerating. The runs agreed up to there; what follows is no longer comparable.
-        ++figures.roundoff_stops;
-        std::printf("  roundoff stop: %s under %s: %s\n", d.name.c_str(), t.describe().c_str(),
-                    r.divergence.c_str());
-        continue;
-      }
-      if (r.after_wall_corner && t.keepsAxes() && std::fmod(std::abs(t.rotate_deg), 180.0) != 0) {
-        // Known and reported (docs/robustness.md): a car that meets an x wall and a y wall in the
-        // same step has them resolved x first, then y; a quarter turn swaps the order, and the
-        // two velocity removals (each projected back onto the heading) do not commute.
-        ++figures.corner_stops;
-        std::printf("  wall-corner stop: %s under %s: %s\n", d.name.c_str(), t.describe().c_str(),
-                    r.divergence.c_str());
-        continue;
-      }
       EXPECT_EQ(r.divergence, "") << d.name << " under " << t.describe();
     }
   }

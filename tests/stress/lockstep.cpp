@@ -86,31 +86,6 @@ std::string compareFrame(const World& a, const World& b, const RigidTransform& t
   return {};
 }
 
-int signOf(double v) {
-  return (v > 0.0) - (v < 0.0);
-}
-
-// True when the speeds differ in sign while both are rounding residues (or exactly zero): the car
-// model branches on the sign of the speed, so this alone can change the next step.
-bool roundoffSpeedSplit(const World& a, const World& b, double speed_tolerance) {
-  const double va = a.car().speed, vb = b.car().speed;
-  const double residue = std::max(kRoundoffSpeed, speed_tolerance);
-  return signOf(va) != signOf(vb) && std::abs(va) <= residue && std::abs(vb) <= residue;
-}
-
-// True when the car's bounds lie on an x wall and a y wall at once (walls clamp them exactly).
-bool inWallCorner(const World& w) {
-  if (!w.scene().bounds) return false;
-  const Aabb2 box = w.carBox().aabb();
-  const Aabb2& walls = *w.scene().bounds;
-  const double eps =
-      1e-9 * (1.0 + walls.max.cwiseAbs().maxCoeff() + walls.min.cwiseAbs().maxCoeff());
-  const auto near = [eps](double a, double b) { return std::abs(a - b) <= eps; };
-  const bool on_x = near(box.min.x(), walls.min.x()) || near(box.max.x(), walls.max.x());
-  const bool on_y = near(box.min.y(), walls.min.y()) || near(box.max.y(), walls.max.y());
-  return on_x && on_y;
-}
-
 }  // namespace
 
 LockstepResult runLockstep(const Scene& original, const RigidTransform& t,
@@ -120,8 +95,6 @@ LockstepResult runLockstep(const Scene& original, const RigidTransform& t,
   World b(transformed(original, t), settings);
   LockstepResult result;
   std::size_t hits_compared = 0;
-  std::int64_t split_frame = -10;
-  std::int64_t corner_frame = -10;
   Budget budget;
   result.divergence = compareFrame(a, b, t, tolerance, hits_compared, result.worst, budget);
   for (const InputFrame& in : inputs) {
@@ -130,13 +103,7 @@ LockstepResult runLockstep(const Scene& original, const RigidTransform& t,
     b.step(t.input(in));
     ++result.frames;
     result.divergence = compareFrame(a, b, t, tolerance, hits_compared, result.worst, budget);
-    if (roundoffSpeedSplit(a, b, tolerance.speed)) split_frame = a.frame();
-    if (inWallCorner(a) || inWallCorner(b)) corner_frame = a.frame();
   }
-  const bool diverged = !result.divergence.empty();
-  result.after_roundoff_speed = diverged && a.frame() - split_frame <= 2;
-  result.after_wall_corner =
-      diverged && !result.after_roundoff_speed && a.frame() - corner_frame <= 2;
   result.hits = a.hits().size();
   result.hits_compared = hits_compared;
   result.game_over = a.gameOver();

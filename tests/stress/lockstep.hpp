@@ -31,19 +31,9 @@ struct Deviation {
   double speed = 0.0;     ///< m/s.
 };
 
-/// Speeds this small are rounding residues of the contact response, not motion (m/s).
-inline constexpr double kRoundoffSpeed = 1e-12;
-
 /// Outcome of one lockstep run.
 struct LockstepResult {
-  std::string divergence;  ///< Empty, or "frame F: FIELD: original A, image B (...)".
-  /// Set when the divergence follows, within two frames, speeds of different signs (or zero and
-  /// not zero) that are both rounding residues (|v| <= max(kRoundoffSpeed, tolerance.speed)): a
-  /// known cause, see docs/robustness.md ("Numerical stress").
-  bool after_roundoff_speed = false;
-  /// Set when the divergence follows, within two frames, a step in which either car met two walls
-  /// at once (a corner): a known cause under quarter turns, see docs/robustness.md.
-  bool after_wall_corner = false;
+  std::string divergence;         ///< Empty, or "frame F: FIELD: original A, image B (...)".
   Deviation worst;                ///< Largest differences while the runs agreed.
   std::int64_t frames = 0;        ///< Frames compared.
   std::size_t hits = 0;           ///< Hits of the original run.
