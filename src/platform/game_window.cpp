@@ -257,7 +257,7 @@ bool displayAvailable() {
   return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
 }
 
-int runGameWindow(GameWindowOptions options) {
+int runGameWindow(const GameWindowOptions& options) {
   // Our own handlers finish the recording; SDL's would only post SDL_QUIT.
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   if (SDL_Init(SDL_INIT_VIDEO) != 0) {

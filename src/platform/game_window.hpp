@@ -19,6 +19,6 @@ struct GameWindowOptions {
 
 /// Opens the window and runs the game until Esc, window close, SIGINT or SIGTERM. Returns the exit
 /// status: 0 normally, 1 when no display can be opened, 2 when an output cannot be written.
-[[nodiscard]] int runGameWindow(GameWindowOptions options);
+[[nodiscard]] int runGameWindow(const GameWindowOptions& options);
 
 }  // namespace cardemo
