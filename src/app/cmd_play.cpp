@@ -117,7 +117,7 @@ int runPlayCommand(const PlayOptions& options) {
   }
   session.scene = std::move(scene).value();
   session.scene_path = scene_path;
-  return runGameWindow(std::move(window));
+  return runGameWindow(window);
 }
 
 }  // namespace

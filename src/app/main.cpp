@@ -6,7 +6,10 @@
 
 #include "app/commands.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+// Builds the command line and runs the chosen subcommand; its exceptions are handled by main.
+int run(int argc, char** argv) {
   CLI::App app{"cardemo: a top-down car game with an exact, fast collision core", "cardemo"};
   app.set_version_flag("--version", std::string("cardemo ") + CARDEMO_VERSION);
   app.require_subcommand(1);
@@ -34,9 +37,20 @@ int main(int argc, char** argv) {
     // Usage errors are bad input: one line on stderr, exit status 2 (CONTRACT.md).
     std::fprintf(stderr, "cardemo: %s (see cardemo --help)\n", e.what());
     return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cardemo: internal error: %s\n", e.what());
-    return 3;
   }
   return exit_code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Setting up the command line can throw too (allocation), so everything runs inside the try.
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cardemo: internal error: %s\n", e.what());
+  } catch (...) {
+    std::fprintf(stderr, "cardemo: internal error: unknown exception\n");
+  }
+  return 3;
 }

@@ -186,7 +186,7 @@ std::optional<ConvexPolygon> ConvexPolygon::fromPoints(std::span<const Eigen::Ve
   // Work relative to the first point so that polygons far from the origin are judged accurately.
   ConvexPolygon poly;
   poly.count = n;
-  const Eigen::Vector2d ref = points[0];
+  const Eigen::Vector2d& ref = points[0];
   double twice_area = 0.0;
   double extent = 0.0;
   for (int i = 0; i < n; ++i) {

@@ -68,8 +68,8 @@ Candidate chooseReference(const std::array<double, 8>& seps, const ManifoldSetti
   for (int k = 1; k < 4; ++k) {
     if (seps[static_cast<std::size_t>(k)] > best_a.separation)
       best_a = {k, seps[static_cast<std::size_t>(k)]};
-    if (seps[static_cast<std::size_t>(k + 4)] > best_b.separation) {
-      best_b = {k + 4, seps[static_cast<std::size_t>(k + 4)]};
+    if (seps[static_cast<std::size_t>(k) + 4] > best_b.separation) {
+      best_b = {k + 4, seps[static_cast<std::size_t>(k) + 4]};
     }
   }
   const Candidate& best = best_b.separation > best_a.separation ? best_b : best_a;
@@ -110,7 +110,7 @@ Manifold2 manifoldObb2(const Obb2& a, const Obb2& b, const ManifoldSettings& set
   std::array<double, 8> seps{};
   for (int k = 0; k < 4; ++k) {
     seps[static_cast<std::size_t>(k)] = faceSeparation(a, b, ab, k);
-    seps[static_cast<std::size_t>(k + 4)] = faceSeparation(b, a, ba, k);
+    seps[static_cast<std::size_t>(k) + 4] = faceSeparation(b, a, ba, k);
   }
   Manifold2 m;
   const double sat = *std::max_element(seps.begin(), seps.end());

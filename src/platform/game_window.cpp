@@ -288,7 +288,7 @@ bool displayAvailable() {
          (driver != nullptr && *driver != '\0');
 }
 
-int runGameWindow(GameWindowOptions options) {
+int runGameWindow(const GameWindowOptions& options) {
   // Our own handlers finish the recording; SDL's would only post SDL_QUIT.
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   if (SDL_Init(SDL_INIT_VIDEO) != 0) {

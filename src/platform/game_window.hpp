@@ -22,6 +22,6 @@ struct GameWindowOptions {
 /// Opens the window and runs the game until Esc, window close, SIGINT, SIGTERM or SIGHUP, then
 /// finishes the recording and writes the summary. Returns the exit status: 0 normally, 1 when no
 /// display can be opened, 2 when an output cannot be written.
-[[nodiscard]] int runGameWindow(GameWindowOptions options);
+[[nodiscard]] int runGameWindow(const GameWindowOptions& options);
 
 }  // namespace cardemo

@@ -23,10 +23,14 @@ void gridLines(Canvas& canvas, const Camera& camera, const Aabb2& view, double s
   const Eigen::Vector2f lo_px = camera.toScreen(view.min);  // bottom-left on screen
   const Eigen::Vector2f hi_px = camera.toScreen(view.max);  // top-right on screen
   for (int axis = 0; axis < 2; ++axis) {
-    const double lo = std::ceil(view.min[axis] / step) * step;
+    const double first = std::ceil(view.min[axis] / step);
+    const double lo = first * step;
     const double hi = view.max[axis];
-    if ((hi - lo) / step > kMaxGridLines) continue;
-    for (double k = lo; k <= hi; k += step) {
+    if (!((hi - lo) / step <= kMaxGridLines)) continue;  // also skips NaN
+    // An integer counter: adding `step` to a double would drift, and far out could stop advancing.
+    const int lines = static_cast<int>(std::floor(hi / step) - first);
+    for (int i = 0; i <= lines; ++i) {
+      const double k = (first + i) * step;
       if (skip_major && std::fmod(k, 10.0) == 0.0) continue;
       Eigen::Vector2d w = camera.center;
       w[axis] = k;

@@ -123,8 +123,8 @@ IntPolygon intPolygon(const ConvexPolygon& p, long e) {
   }
   for (int i = 0; i < p.count; ++i) {
     const auto j = static_cast<std::size_t>((i + 1) % p.count), k = static_cast<std::size_t>(i);
-    r.nx.push_back(r.y[j] - r.y[k]);
-    r.ny.push_back(r.x[k] - r.x[j]);
+    r.nx.emplace_back(r.y[j] - r.y[k]);
+    r.ny.emplace_back(r.x[k] - r.x[j]);
   }
   return r;
 }
