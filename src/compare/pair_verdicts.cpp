@@ -43,10 +43,10 @@ PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const Sta
     out.exact_separation = ours;
     out.hit[static_cast<int>(Verdict::kExact)] = ours <= 0.0;
   } else {
-    const exact::ExactResult e = std::holds_alternative<Obb2>(shape)
-                                     ? exact::collideObb2(player, std::get<Obb2>(shape))
-                                     : exact::collidePolygons(ConvexPolygon::fromObb(player),
-                                                              std::get<ConvexPolygon>(shape));
+    const exact::ExactResult e =
+        std::holds_alternative<Obb2>(shape)
+            ? exact::collideObb2(player, std::get<Obb2>(shape))
+            : exact::collideObbPolygon(player, std::get<ConvexPolygon>(shape));
     out.exact_separation = e.separation;
     out.hit[static_cast<int>(Verdict::kExact)] = e.hit;
     out.used_gmp = true;

@@ -106,5 +106,33 @@ TEST(ExactPolygons, MatchesBoxOracleForAxisAlignedBoxes) {
   EXPECT_EQ(boxes.separation, 0.5);
 }
 
+TEST(ExactObbPolygon, MatchesTheBoxOracleOnABoxShapedPolygon) {
+  const Obb2 a = square(0, 0, 30), b = square(2.5, 1.25, 90);
+  const ExactResult boxes = exact::collideObb2(a, b);
+  const ExactResult mixed = exact::collideObbPolygon(a, ConvexPolygon::fromObb(b));
+  EXPECT_EQ(boxes.hit, mixed.hit);
+  EXPECT_NEAR(boxes.separation, mixed.separation, 1e-15);
+}
+
+// Found by fuzz_sat2 in CI: a 1 cm box 1e7 m out and a polygon 169 m away. The box's own axes give
+// the gap 169.1396442837778 m (also what 80-bit arithmetic gives); the box rounded to double
+// corners first has faces tilted by ~1e-7 rad, which moves that gap by 7e-6 m, beyond the 2e-6 m
+// contract.
+TEST(ExactObbPolygon, KeepsTheBoxAxesExactFarFromTheOrigin) {
+  Obb2 box;
+  box.center = {6999888.0751878992, 6999888.0751878982};
+  box.axis = {-0.53350367659923026, 0.84579774595059298};
+  box.half = {0.0055028049049539391, 0.0050200814178837892};
+  const ConvexPolygon far = polygon({{6999688.0759066623, 6999738.2033362919},
+                                     {6999782.4947715709, 6999738.4136396833},
+                                     {6999772.1651075268, 6999738.5370188402},
+                                     {6999767.8601483647, 6999738.5694730571}});
+  const ExactResult r = exact::collideObbPolygon(box, far);
+  EXPECT_FALSE(r.hit);
+  EXPECT_NEAR(r.separation, 169.1396442837778, 1e-9);
+  const ExactResult rounded = exact::collidePolygons(ConvexPolygon::fromObb(box), far);
+  EXPECT_GT(std::abs(rounded.separation - r.separation), 2e-6);
+}
+
 }  // namespace
 }  // namespace cardemo::exact

@@ -24,6 +24,12 @@ struct ExactResult {
 /// Exact SAT verdict for two convex polygons (axes: every edge normal of both).
 [[nodiscard]] ExactResult collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b);
 
+/// Exact SAT verdict for a box and a convex polygon (axes: the box's 2 axes, taken exactly as
+/// stored, and every polygon edge normal). Unlike collidePolygons(ConvexPolygon::fromObb(box), p),
+/// the box is not rounded to double corners first: a 1 cm box far from the origin would get edge
+/// directions off by ~1e-7 rad, which is 2e-5 m over a 200 m gap.
+[[nodiscard]] ExactResult collideObbPolygon(const Obb2& box, const ConvexPolygon& polygon);
+
 /// Exact SAT verdict for two 3D boxes: 6 face normals (cross products of the stored edge columns)
 /// and the 9 edge-edge cross products, skipping exactly-zero ones (exact, see obb3.hpp).
 [[nodiscard]] ExactResult collideObb3(const Obb3& a, const Obb3& b);

@@ -45,6 +45,17 @@ Shape boxShape(const Obb2& box) {
   return s;
 }
 
+Shape polygonShape(const ConvexPolygon& polygon) {
+  Shape s;
+  for (int i = 0; i < polygon.count; ++i) s.points.push_back(exactPoint(polygon.vertex(i)));
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Point& p = s.points[i];
+    const Point& q = s.points[(i + 1) % s.points.size()];
+    s.axes.push_back({q.y - p.y, p.x - q.x});
+  }
+  return s;
+}
+
 void project(const Shape& s, const Point& axis, mpq_class& lo, mpq_class& hi) {
   lo = hi = dot(s.points.front(), axis);
   for (std::size_t i = 1; i < s.points.size(); ++i) {
@@ -143,6 +154,10 @@ void projectInt(const IntPolygon& s, const mpz_class& nx, const mpz_class& ny, m
 
 ExactResult collideObb2(const Obb2& a, const Obb2& b) {
   return collideShapes(boxShape(a), boxShape(b));
+}
+
+ExactResult collideObbPolygon(const Obb2& box, const ConvexPolygon& polygon) {
+  return collideShapes(boxShape(box), polygonShape(polygon));
 }
 
 ExactResult collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
