@@ -63,6 +63,13 @@ double restingPenetration(const Eigen::Vector2d& position) {
   return std::max(1e-4, 2e-15 * scale);
 }
 
+double pushOutSlack(const Eigen::Vector2d& position) {
+  // A push computed from a pose that was itself just pushed is a few ulps of the coordinates;
+  // repeating it would only chase rounding.
+  const double scale = std::abs(position.x()) + std::abs(position.y());
+  return std::max(1e-10, 8e-16 * scale);
+}
+
 bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls) {
   const Aabb2 box = carBox(car, params).aabb();
   double dx = 0.0, dy = 0.0;

@@ -19,6 +19,10 @@ void removeClosingVelocity(CarState& car, const Eigen::Vector2d& normal, const C
 /// Penetration (metres, > 0) that push-out leaves in place so that resting contact stays contact.
 [[nodiscard]] double restingPenetration(const Eigen::Vector2d& position);
 
+/// Excess penetration over the resting one (metres, > 0) too small to push out: the rounding of
+/// a position near `position`.
+[[nodiscard]] double pushOutSlack(const Eigen::Vector2d& position);
+
 /// Shifts the car back inside `walls` when its bounds leave them, removing the velocity into each
 /// wall it met; returns true when it moved.
 bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls);

@@ -13,6 +13,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
 constexpr double kNoContact = 2.0;
+// Damage points (speed x damage_per_mps) this close above an integer still round down to it.
+constexpr double kDamageRounding = 1e-9;
 
 std::vector<StaticShape> collidersOf(const Scene& scene) {
   std::vector<StaticShape> out;
@@ -314,10 +316,12 @@ void World::resolveContacts() {
     for (const ActiveContact& c : detected_) {
       if (c.separation < deepest->separation) deepest = &c;
     }
-    const double rest = restingPenetration(car_.position);
-    // Within twice the resting margin counts as resting: no re-push for a last-bit difference.
-    if (deepest->separation >= -2.0 * rest) break;
-    const double push = -deepest->separation - rest;
+    // Only the excess over the resting depth is pushed out, however small, so the pose after the
+    // response is continuous in the penetration. A dead band that jumped from "no push" to "push
+    // back to the resting depth" at twice that depth moved the car by 0.1 mm on one side of it,
+    // and a translated copy of a drive that landed on the other side diverged by that much.
+    const double push = -deepest->separation - restingPenetration(car_.position);
+    if (!(push > pushOutSlack(car_.position))) break;
     const Eigen::Vector2d n = deepest->normal;
     car_.position.x() -= n.x() * push;
     car_.position.y() -= n.y() * push;
@@ -347,7 +351,9 @@ void World::recordHits() {
     const std::uint32_t id = contacts_[k].collider;
     if (touching_[id] != 0) continue;
     const double speed = contact_speed_[k];
-    const double raw = std::ceil(settings_.damage_per_mps * speed);
+    // Rounded up, but an excess within rounding of an integer is not a point more: a car at its
+    // exact 8 m/s reverse limit hitting a rotated copy of a car reads 8.0000000000000018 m/s.
+    const double raw = std::ceil(settings_.damage_per_mps * speed - kDamageRounding);
     const double clamped = std::clamp(raw, static_cast<double>(settings_.damage_min),
                                       static_cast<double>(settings_.damage_max));
     const int damage = static_cast<int>(clamped);

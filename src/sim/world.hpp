@@ -33,7 +33,8 @@ struct WorldSettings {
   BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;  ///< Player box used for queries.
   int damage_min = 5;                                     ///< Damage of the gentlest hit.
   int damage_max = 50;                                    ///< Damage of the hardest hit.
-  double damage_per_mps = 3.0;  ///< Damage per m/s of normal impact speed (rounded up).
+  double damage_per_mps =
+      3.0;  ///< Damage per m/s of normal impact speed (rounded up, ignoring an excess below 1e-9).
   int max_push_iterations = 4;  ///< Contact resolution passes per step.
   CollisionDetection collision = CollisionDetection::kContinuous;  ///< Fast-motion scheme.
 };
