@@ -103,11 +103,17 @@ struct Double8 {
 [[gnu::always_inline]] inline Double8 select(Mask8 m, Double8 a, Double8 b) {
   return {_mm512_mask_blend_pd(m.m, b.v, a.v)};
 }
+[[gnu::always_inline]] inline Double8 negateWhere(Mask8 m, Double8 a) {
+  return {_mm512_castsi512_pd(_mm512_mask_xor_epi64(_mm512_castpd_si512(a.v), m.m,
+                                                    _mm512_castpd_si512(a.v),
+                                                    _mm512_castpd_si512(_mm512_set1_pd(-0.0))))};
+}
 [[gnu::always_inline]] inline void store(double* p, Double8 a) {
   _mm512_storeu_pd(p, a.v);
 }
 [[gnu::always_inline]] inline void storeHits(std::uint8_t* p, Mask8 separated) {
-  storeHitBytes(p, separated.m, 8);
+  const std::uint64_t bytes = hitBytes(separated.m);
+  __builtin_memcpy(p, &bytes, 8);
 }
 
 }  // namespace

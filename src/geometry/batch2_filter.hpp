@@ -76,17 +76,22 @@ template <class F>
   return {gtBits(m, margin), gtBits(abs(m), margin)};
 }
 
-// hit[k] = 1 - bit k of `separated`, for k < count (at most 8).
-inline void storeHitBytes(std::uint8_t* hit, unsigned separated, std::size_t count) {
-  // Byte k of the product holds the whole mask; keep bit k there, then turn each byte into 0/1.
-  const std::uint64_t bytes =
-      (static_cast<std::uint64_t>(~separated & 0xFFu) * 0x0101010101010101u) & 0x8040201008040201u;
-  const std::uint64_t ones = ((bytes + 0x7F7F7F7F7F7F7F7Fu) >> 7) & 0x0101010101010101u;
-  if (count == 8) {
-    __builtin_memcpy(hit, &ones, 8);
-    return;
+// kHitBytes[m] holds eight hit bytes, byte k = 1 - bit k of m: one load per lane mask.
+struct HitByteTable {
+  std::uint64_t bytes[256];
+  constexpr HitByteTable() : bytes{} {
+    for (unsigned m = 0; m < 256; ++m) {
+      for (unsigned k = 0; k < 8; ++k) {
+        if (((m >> k) & 1u) == 0) bytes[m] |= std::uint64_t{1} << (8 * k);
+      }
+    }
   }
-  for (std::size_t k = 0; k < count; ++k) hit[k] = static_cast<std::uint8_t>(ones >> (8 * k));
+};
+constexpr HitByteTable kHitBytes;
+
+// Eight hit bytes, hit[k] = 1 - bit k of `separated`.
+[[gnu::always_inline]] inline std::uint64_t hitBytes(unsigned separated) {
+  return kHitBytes.bytes[separated & 0xFFu];
 }
 
 // Runs the filter over [first, last) (the float arrays hold whole lane groups, padded), writes
@@ -96,20 +101,33 @@ template <class F, class Exact>
 std::size_t runFilteredOverlap2(const Box2FilterOne& fa, const Box2FilterArrays& fb,
                                 std::size_t first, std::size_t last, std::uint8_t* hit,
                                 const Exact& exact) {
+  // Local copies: the byte stores to `hit` may alias anything, so pointers read through a
+  // reference would be reloaded after every store.
   const FilterQuery2<F> q = splatQuery<F>(fa);
+  const Box2FilterArrays b = fb;
   std::size_t undecided = 0;
-  for (std::size_t i = first; i < last; i += F::kWidth) {
-    const std::size_t lanes = last - i < F::kWidth ? last - i : F::kWidth;
-    const FilterVerdict v = filter2<F>(q, fb, i);
-    for (std::size_t k = 0; k < lanes; k += 8) {
-      storeHitBytes(hit + i + k, v.separated >> k, lanes - k < 8 ? lanes - k : 8);
+  std::size_t i = first;
+  for (; i + F::kWidth <= last; i += F::kWidth) {
+    const FilterVerdict v = filter2<F>(q, b, i);
+    for (std::size_t k = 0; k < F::kWidth; k += 8) {
+      const std::uint64_t bytes = hitBytes(v.separated >> k);
+      __builtin_memcpy(hit + i + k, &bytes, 8);
     }
-    const unsigned live = (1u << lanes) - 1u;  // lanes <= 16
-    const unsigned open = ~v.decided & live;
+    const unsigned open = ~v.decided & ((1u << F::kWidth) - 1u);
     if (open != 0) [[unlikely]] {
-      exact(i, i + lanes);
+      exact(i, i + F::kWidth);
       undecided += static_cast<std::size_t>(__builtin_popcount(open));
     }
+  }
+  if (i == last) return undecided;
+  // The tail: a whole group computed on the padding, the live lanes written.
+  const std::size_t lanes = last - i;
+  const FilterVerdict v = filter2<F>(q, b, i);
+  for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
+  const unsigned open = ~v.decided & ((1u << lanes) - 1u);
+  if (open != 0) {
+    exact(i, last);
+    undecided += static_cast<std::size_t>(__builtin_popcount(open));
   }
   return undecided;
 }

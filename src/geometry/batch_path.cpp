@@ -19,18 +19,8 @@ BatchPath widestUpTo(BatchPath wanted) {
   return BatchPath::kPortable;
 }
 
-BatchPath initialPath() {
-  const char* forced = std::getenv("CARDEMO_BATCH_PATH");
-  if (forced != nullptr) {
-    for (const BatchPath path : {BatchPath::kPortable, BatchPath::kAvx2, BatchPath::kAvx512}) {
-      if (std::strcmp(forced, batchPathName(path)) == 0) return widestUpTo(path);
-    }
-  }
-  return widestUpTo(BatchPath::kAvx512);
-}
-
 std::atomic<BatchPath>& chosenPath() {
-  static std::atomic<BatchPath> path{initialPath()};
+  static std::atomic<BatchPath> path{batchPathNamed(std::getenv("CARDEMO_BATCH_PATH"))};
   return path;
 }
 
@@ -52,6 +42,15 @@ bool batchPathAvailable(BatchPath path) {
   (void)avx2;
 #endif
   return false;
+}
+
+BatchPath batchPathNamed(const char* name) {
+  if (name != nullptr) {
+    for (const BatchPath path : {BatchPath::kPortable, BatchPath::kAvx2, BatchPath::kAvx512}) {
+      if (std::strcmp(name, batchPathName(path)) == 0) return widestUpTo(path);
+    }
+  }
+  return widestUpTo(BatchPath::kAvx512);
 }
 
 BatchPath batchPath() {

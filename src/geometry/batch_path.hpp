@@ -19,6 +19,10 @@ enum class BatchPath {
 /// otherwise. A named path the CPU cannot run gives the widest available one below it.
 [[nodiscard]] BatchPath batchPath();
 
+/// The path that CARDEMO_BATCH_PATH=`name` selects: the widest available one at or below the
+/// named path; the widest available one when `name` is null or names no path.
+[[nodiscard]] BatchPath batchPathNamed(const char* name);
+
 /// Forces a path (tests and benchmarks run each). `path` must be available.
 void setBatchPath(BatchPath path);
 

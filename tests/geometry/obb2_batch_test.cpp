@@ -395,6 +395,18 @@ TEST(Obb2Batch, TinyHugeAndOutOfRangeBoxesMatchScalar) {
   }
 }
 
+TEST(BatchPath, TheEnvironmentNamesEachPathAndFallsBackToANarrowerOne) {
+  const std::vector<BatchPath> paths = availablePaths();
+  const BatchPath widest = paths.back();
+  EXPECT_EQ(batchPathNamed(nullptr), widest);
+  EXPECT_EQ(batchPathNamed("fastest"), widest);
+  EXPECT_EQ(batchPathNamed("portable"), BatchPath::kPortable);
+  EXPECT_EQ(batchPathNamed("avx2"),
+            batchPathAvailable(BatchPath::kAvx2) ? BatchPath::kAvx2 : BatchPath::kPortable);
+  EXPECT_EQ(batchPathNamed("avx512"), widest);
+  for (const BatchPath path : paths) EXPECT_EQ(batchPathNamed(batchPathName(path)), path);
+}
+
 TEST(BatchPath, ForcingTheFallbackSticksAndAvx2IsUsedWhenAvailable) {
   PathGuard guard;
   setBatchPath(BatchPath::kPortable);
