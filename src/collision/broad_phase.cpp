@@ -6,12 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "collision/grid_scan.hpp"
 #include "geometry/batch_path.hpp"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace cardemo {
 namespace {
@@ -66,35 +61,6 @@ double extentOf(const Aabb2& b) {
     for (; j > first && *(j - 1) > v; --j) *j = *(j - 1);
     *j = v;
   }
-}
-
-// The cells of `level` that hold the lower-left corner of every box that may touch `query`: a
-// box that does has its corner at or above query.min - reach (see buildLevel), and the cell map
-// is monotone. The same IEEE operations as cellOf, two axes at a time where SSE2 is baseline.
-grid_detail::ScanWindow windowOf(const Aabb2& query, const Aabb2& bounds, double inv_cell,
-                                 const Eigen::Vector2d& reach, std::int64_t nx, std::int64_t ny) {
-  grid_detail::ScanWindow w{0, 0, 0, 0, query.min.x(), query.min.y(), query.max.x(), query.max.y()};
-#if defined(__SSE2__)
-  const __m128d origin = _mm_loadu_pd(bounds.min.data()), inv = _mm_set1_pd(inv_cell);
-  const __m128d last = _mm_set_pd(static_cast<double>(ny - 1), static_cast<double>(nx - 1));
-  const __m128d zero = _mm_setzero_pd();
-  const __m128d low = _mm_sub_pd(_mm_loadu_pd(query.min.data()), _mm_loadu_pd(reach.data()));
-  // max(t, 0) gives 0 for NaN (its second operand), as cellOf's std::max(0.0, t) does.
-  const __m128d lo = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(low, origin), inv), zero), last);
-  const __m128d hi = _mm_min_pd(
-      _mm_max_pd(_mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(query.max.data()), origin), inv), zero), last);
-  const __m128i lo_cells = _mm_cvttpd_epi32(lo), hi_cells = _mm_cvttpd_epi32(hi);
-  w.x0 = _mm_cvtsi128_si32(lo_cells);
-  w.y0 = _mm_cvtsi128_si32(_mm_shuffle_epi32(lo_cells, 1));
-  w.x1 = _mm_cvtsi128_si32(hi_cells);
-  w.y1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(hi_cells, 1));
-#else
-  w.x0 = cellOf(query.min.x() - reach.x(), bounds.min.x(), inv_cell, nx);
-  w.x1 = cellOf(query.max.x(), bounds.min.x(), inv_cell, nx);
-  w.y0 = cellOf(query.min.y() - reach.y(), bounds.min.y(), inv_cell, ny);
-  w.y1 = cellOf(query.max.y(), bounds.min.y(), inv_cell, ny);
-#endif
-  return w;
 }
 
 // Ids found by a query are gathered on the stack, then sorted and appended to the caller's
@@ -225,6 +191,40 @@ UniformGrid::UniformGrid(std::span<const Aabb2> boxes) : size_(boxes.size()) {
   for (const std::vector<std::uint32_t>& m : members) {
     if (!m.empty()) levels_.push_back(buildLevel(boxes, m));
   }
+  refreshViews();
+}
+
+UniformGrid::UniformGrid(const UniformGrid& other)
+    : size_(other.size_),
+      bounds_(other.bounds_),
+      levels_(other.levels_),
+      large_boxes_(other.large_boxes_),
+      large_ids_(other.large_ids_) {
+  refreshViews();
+}
+
+UniformGrid& UniformGrid::operator=(const UniformGrid& other) {
+  if (this != &other) *this = UniformGrid(other);
+  return *this;
+}
+
+void UniformGrid::refreshViews() {
+  views_.clear();
+  for (const Level& l : levels_) {
+    views_.push_back({l.min_x.data(),
+                      l.min_y.data(),
+                      l.max_x.data(),
+                      l.max_y.data(),
+                      l.ids.data(),
+                      l.cell_start.data(),
+                      l.row_bits.data(),
+                      {l.bounds.min.x(), l.bounds.min.y()},
+                      {l.bounds.max.x(), l.bounds.max.y()},
+                      {l.reach.x(), l.reach.y()},
+                      l.inv_cell,
+                      {static_cast<double>(l.nx - 1), static_cast<double>(l.ny - 1)},
+                      l.nx});
+  }
 }
 
 void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) const {
@@ -233,20 +233,16 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
   if (size_ == 0 || !query.overlaps(bounds_)) return;
   std::array<std::uint32_t, kQueryBuffer> buffer;  // deliberately not zeroed: written before read
   grid_detail::IdSink sink{buffer.data(), buffer.size(), 0, &spillInto, &out};
+  const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
 #if defined(CARDEMO_BATCH_AVX2)
-  const auto scan = batchPath() != BatchPath::kPortable ? &grid_detail::scanLevelAvx2
-                                                        : &grid_detail::scanLevelPortable;
-#else
-  const auto scan = &grid_detail::scanLevelPortable;
-#endif
-  for (const Level& level : levels_) {
-    if (!query.overlaps(level.bounds)) continue;
-    const grid_detail::LevelArrays arrays{
-        level.min_x.data(), level.min_y.data(),      level.max_x.data(),    level.max_y.data(),
-        level.ids.data(),   level.cell_start.data(), level.row_bits.data(), level.nx};
-    scan(arrays, windowOf(query, level.bounds, level.inv_cell, level.reach, level.nx, level.ny),
-         sink);
+  if (batchPath() != BatchPath::kPortable) {
+    grid_detail::scanLevelsAvx2(views_.data(), views_.size(), box, sink);
+  } else {
+    grid_detail::scanLevelsPortable(views_.data(), views_.size(), box, sink);
   }
+#else
+  grid_detail::scanLevelsPortable(views_.data(), views_.size(), box, sink);
+#endif
   for (std::size_t k = 0; k < large_boxes_.size(); ++k) {
     if (!large_boxes_[k].overlaps(query)) continue;
     if (sink.count == sink.capacity) spillInto(sink);
@@ -266,8 +262,9 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
 }
 
 std::size_t UniformGrid::memoryBytes() const {
-  std::size_t bytes = levels_.capacity() * sizeof(Level) + large_boxes_.capacity() * sizeof(Aabb2) +
-                      large_ids_.capacity() * sizeof(std::uint32_t);
+  std::size_t bytes =
+      levels_.capacity() * sizeof(Level) + views_.capacity() * sizeof(grid_detail::LevelArrays) +
+      large_boxes_.capacity() * sizeof(Aabb2) + large_ids_.capacity() * sizeof(std::uint32_t);
   for (const Level& level : levels_) {
     bytes += (level.min_x.capacity() + level.min_y.capacity() + level.max_x.capacity() +
               level.max_y.capacity()) *

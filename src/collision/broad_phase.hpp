@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "collision/grid_scan.hpp"
 #include "geometry/aabb.hpp"
 
 namespace cardemo {
@@ -21,6 +22,16 @@ class UniformGrid {
   /// Builds the grid over `boxes` (index i of the span is the item id). Cell sizes follow the
   /// typical box size; the grid covers the union of the boxes. An empty span is allowed.
   explicit UniformGrid(std::span<const Aabb2> boxes);
+  /// Copies (the scans' views of the levels are rebuilt for the copy's own arrays).
+  UniformGrid(const UniformGrid& other);
+  /// Copies (as the copy constructor).
+  UniformGrid& operator=(const UniformGrid& other);
+  /// Moves (the arrays keep their addresses, so do the views).
+  UniformGrid(UniformGrid&& other) noexcept = default;
+  /// Moves.
+  UniformGrid& operator=(UniformGrid&& other) noexcept = default;
+  /// Frees the levels.
+  ~UniformGrid() = default;
 
   /// Appends to `out` (after clearing it) the ids of every box that touches or overlaps `query`,
   /// each once, in increasing id order. Does not allocate once `out` has grown to its peak size.
@@ -52,10 +63,12 @@ class UniformGrid {
   std::size_t size_ = 0;
   Aabb2 bounds_;
   std::vector<Level> levels_;
+  std::vector<grid_detail::LevelArrays> views_;  // the scans' plain view of each level
   std::vector<Aabb2> large_boxes_;  // items too big for any level: tested by every query
   std::vector<std::uint32_t> large_ids_;
 
   static Level buildLevel(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members);
+  void refreshViews();
 };
 
 /// Brute-force twin of UniformGrid: tests every box. The reference in tests.

@@ -41,57 +41,29 @@ constexpr Compress kCompress;
 // Lanes [0, n) of a step, for the n boxes left in a row (4 or more: all).
 constexpr std::uint8_t kLive[5] = {0x0, 0x1, 0x3, 0x7, 0xF};
 
-// The query box, one copy per lane.
-struct Query4 {
-  __m256d min_x, min_y, max_x, max_y;
-};
-
-// Tests boxes k .. k + 3 (lanes at or past `end` are ignored) and appends the ids of those that
-// touch or overlap the query at buffer[count]; returns the new count. Writes four slots.
-[[gnu::always_inline]] inline std::size_t step4(const LevelArrays& a, const Query4& q,
-                                                std::uint32_t k, std::uint32_t end,
-                                                std::uint32_t* buffer, std::size_t count) {
-  // Closed intervals: touching counts. Ordered comparisons, so a NaN box is never found.
-  __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(a.min_x + k), q.max_x, _CMP_LE_OQ),
-                             _mm256_cmp_pd(q.min_x, _mm256_loadu_pd(a.max_x + k), _CMP_LE_OQ));
-  in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(a.min_y + k), q.max_y, _CMP_LE_OQ));
-  in = _mm256_and_pd(in, _mm256_cmp_pd(q.min_y, _mm256_loadu_pd(a.max_y + k), _CMP_LE_OQ));
-  const std::uint32_t left = end - k;
-  const unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(in)) & kLive[left < 4 ? left : 4];
-  // All four ids are stored, the found ones first; the count advances past those only.
-  const __m128i ids = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a.ids + k));
-  const __m128i order = _mm_load_si128(reinterpret_cast<const __m128i*>(kCompress.shuffle[bits]));
-  _mm_storeu_si128(reinterpret_cast<__m128i*>(buffer + count), _mm_shuffle_epi8(ids, order));
-  return count + kCompress.count[bits];
-}
-
 }  // namespace
 
-void scanLevelAvx2(const LevelArrays& level, const ScanWindow& w, IdSink& sink) {
-  std::uint32_t* const buffer = sink.buffer;
-  std::size_t count = sink.count;
-  const LevelArrays a = level;
-  const Query4 q{_mm256_set1_pd(w.min_x), _mm256_set1_pd(w.min_y), _mm256_set1_pd(w.max_x),
-                 _mm256_set1_pd(w.max_y)};
-  const auto step = [&](std::uint32_t k, std::uint32_t end, std::size_t n) {
-    return step4(a, q, k, end, buffer, n);
+void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& q,
+                    IdSink& sink) {
+  const __m256d qmin_x = _mm256_set1_pd(q.min[0]), qmin_y = _mm256_set1_pd(q.min[1]);
+  const __m256d qmax_x = _mm256_set1_pd(q.max[0]), qmax_y = _mm256_set1_pd(q.max[1]);
+  const auto step4 = [&](const Boxes& a, std::uint32_t k, std::uint32_t end, std::uint32_t* buffer,
+                         std::size_t count) {
+    // Closed intervals: touching counts. Ordered comparisons, so a NaN box is never found.
+    __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(a.min_x + k), qmax_x, _CMP_LE_OQ),
+                               _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(a.max_x + k), _CMP_LE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(a.min_y + k), qmax_y, _CMP_LE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(a.max_y + k), _CMP_LE_OQ));
+    const std::uint32_t left = end - k;
+    const unsigned bits =
+        static_cast<unsigned>(_mm256_movemask_pd(in)) & kLive[left < 4 ? left : 4];
+    // All four ids are stored, the found ones first; the count advances past those only.
+    const __m128i ids = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a.ids + k));
+    const __m128i order = _mm_load_si128(reinterpret_cast<const __m128i*>(kCompress.shuffle[bits]));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(buffer + count), _mm_shuffle_epi8(ids, order));
+    return count + kCompress.count[bits];
   };
-  for (std::int64_t y = w.y0;; ++y) {
-    y = scanFittingRows<4>(a, w, y, sink.capacity, count, step);
-    if (y > w.y1) break;
-    // Row y's boxes do not fit in what is left of the buffer: empty it before each step.
-    const std::int64_t first_cell = y * a.nx;
-    const std::uint32_t end = a.cell_start[first_cell + w.x1 + 1];
-    for (std::uint32_t k = a.cell_start[first_cell + w.x0]; k < end; k += 4) {
-      if (sink.capacity - count < kScanStep) {
-        sink.count = count;
-        sink.flush(sink);
-        count = sink.count;
-      }
-      count = step(k, end, count);
-    }
-  }
-  sink.count = count;
+  scanLevels<4>(levels, level_count, q, sink, step4);
 }
 
 }  // namespace cardemo::grid_detail
