@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("batch_path", cardemo::batchPathName(cardemo::batchPath()));
   benchmark::AddCustomContext(
       "avx2_available", cardemo::batchPathAvailable(cardemo::BatchPath::kAvx2) ? "yes" : "no");
+  benchmark::AddCustomContext(
+      "avx512_available", cardemo::batchPathAvailable(cardemo::BatchPath::kAvx512) ? "yes" : "no");
 #if defined(CARDEMO_HAVE_COMPARE)
   benchmark::AddCustomContext("box2d", "2.4.1 (Debian libbox2d), float, skin 0");
 #else

@@ -1,13 +1,12 @@
 #include "collision/broad_phase.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "geometry/batch_path.hpp"
 
 namespace cardemo {
 namespace {
@@ -32,6 +31,10 @@ std::int64_t cellOf(double x, double origin, double inv_cell, std::int64_t n) {
   return static_cast<std::int64_t>(t);
 }
 
+// At most 2^30 cells along an axis, so a cell index fits the 32-bit lanes of the query's packed
+// conversion (and any row's first cell index fits 64 bits).
+constexpr double kMaxCellsPerAxis = 0x1p30;
+
 // Number of cells of size `cell` needed to cover a width `w` (as a double: it may be astronomic).
 double cellsAcross(double w, double cell) {
   return std::floor(w / cell) + 1.0;
@@ -46,22 +49,8 @@ double extentOf(const Aabb2& b) {
   return std::max(b.max.x() - b.min.x(), b.max.y() - b.min.y());
 }
 
-// 1 when the closed boxes b and [qmin, qmax] share a point, else 0; no branches. On x86-64
-// (SSE2 is part of the baseline) both axes are compared in one instruction per side.
-std::size_t overlapsBranchless(const Aabb2& b, const Eigen::Vector2d& qmin,
-                               const Eigen::Vector2d& qmax) {
-#if defined(__SSE2__)
-  const __m128d below = _mm_cmple_pd(_mm_loadu_pd(b.min.data()), _mm_loadu_pd(qmax.data()));
-  const __m128d above = _mm_cmple_pd(_mm_loadu_pd(qmin.data()), _mm_loadu_pd(b.max.data()));
-  return static_cast<std::size_t>(_mm_movemask_pd(_mm_and_pd(below, above)) == 3);
-#else
-  return static_cast<std::size_t>((b.min.x() <= qmax.x()) & (qmin.x() <= b.max.x()) &
-                                  (b.min.y() <= qmax.y()) & (qmin.y() <= b.max.y()));
-#endif
-}
-
 // Sorts ids in place: usually a handful, nearly sorted already.
-void sortIds(std::uint32_t* first, std::uint32_t* last) {
+[[gnu::always_inline]] inline void sortIds(std::uint32_t* first, std::uint32_t* last) {
   if (last - first > 32) {
     std::sort(first, last);
     return;
@@ -72,6 +61,16 @@ void sortIds(std::uint32_t* first, std::uint32_t* last) {
     for (; j > first && *(j - 1) > v; --j) *j = *(j - 1);
     *j = v;
   }
+}
+
+// Ids found by a query are gathered on the stack, then sorted and appended to the caller's
+// vector once; a query that finds more spills the buffer into the vector as it goes.
+constexpr std::size_t kQueryBuffer = 128;
+
+void spillInto(grid_detail::IdSink& sink) {
+  auto& out = *static_cast<std::vector<std::uint32_t>*>(sink.owner);
+  out.insert(out.end(), sink.buffer, sink.buffer + sink.count);
+  sink.count = 0;
 }
 
 }  // namespace
@@ -104,7 +103,10 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
     cell = span > 0.0 ? span / static_cast<double>(n) : 1.0;
   }
   const double max_cells = 4.0 * static_cast<double>(n) + 16.0;
-  while (cellsAcross(wx, cell) * cellsAcross(wy, cell) > max_cells) cell *= 2.0;
+  while (cellsAcross(wx, cell) * cellsAcross(wy, cell) > max_cells ||
+         std::max(cellsAcross(wx, cell), cellsAcross(wy, cell)) > kMaxCellsPerAxis) {
+    cell *= 2.0;
+  }
   level.nx = static_cast<std::int64_t>(cellsAcross(wx, cell));
   level.ny = static_cast<std::int64_t>(cellsAcross(wy, cell));
   level.inv_cell = 1.0 / cell;
@@ -122,13 +124,27 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
     ++level.cell_start[cell_of[k] + 1];
   }
   for (std::size_t c = 0; c < cells; ++c) level.cell_start[c + 1] += level.cell_start[c];
-  level.boxes.resize(n);
-  level.ids.resize(n);
+  // Struct of arrays, padded past the last box with one that overlaps nothing (the scans mask
+  // those lanes anyway).
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  const std::size_t stored = n + grid_detail::kScanPadding;
+  level.min_x.assign(stored, kInfinity);
+  level.min_y.assign(stored, kInfinity);
+  level.max_x.assign(stored, -kInfinity);
+  level.max_y.assign(stored, -kInfinity);
+  level.ids.assign(stored, 0);
+  level.row_bits.assign(static_cast<std::size_t>((level.ny + 63) / 64), 0);
   std::vector<std::uint32_t> cursor(level.cell_start.begin(), level.cell_start.end() - 1);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t slot = cursor[cell_of[k]]++;
-    level.boxes[slot] = boxes[members[k]];
+    const Aabb2& b = boxes[members[k]];
+    level.min_x[slot] = b.min.x();
+    level.min_y[slot] = b.min.y();
+    level.max_x[slot] = b.max.x();
+    level.max_y[slot] = b.max.y();
     level.ids[slot] = members[k];
+    const std::uint32_t row = cell_of[k] / static_cast<std::uint32_t>(level.nx);
+    level.row_bits[row / 64] |= std::uint64_t{1} << (row % 64);
   }
   return level;
 }
@@ -175,58 +191,39 @@ UniformGrid::UniformGrid(std::span<const Aabb2> boxes) : size_(boxes.size()) {
   for (const std::vector<std::uint32_t>& m : members) {
     if (!m.empty()) levels_.push_back(buildLevel(boxes, m));
   }
+  refreshViews();
 }
 
-void UniformGrid::Collector::spill() {
-  out.insert(out.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(count));
-  count = 0;
+UniformGrid::UniformGrid(const UniformGrid& other)
+    : size_(other.size_),
+      bounds_(other.bounds_),
+      levels_(other.levels_),
+      large_boxes_(other.large_boxes_),
+      large_ids_(other.large_ids_) {
+  refreshViews();
 }
 
-void UniformGrid::Collector::finish() {
-  if (out.empty()) {
-    // The common case: everything fit in the buffer. Sort there, copy once.
-    sortIds(buffer.data(), buffer.data() + count);
-    out.assign(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(count));
-    return;
-  }
-  spill();
-  sortIds(out.data(), out.data() + out.size());
+UniformGrid& UniformGrid::operator=(const UniformGrid& other) {
+  if (this != &other) *this = UniformGrid(other);
+  return *this;
 }
 
-void UniformGrid::queryLevel(const Level& level, const Aabb2& query, Collector& found) {
-  if (!query.overlaps(level.bounds)) return;
-  const Eigen::Vector2d& o = level.bounds.min;
-  const std::int64_t x0 = cellOf(query.min.x() - level.reach.x(), o.x(), level.inv_cell, level.nx);
-  const std::int64_t x1 = cellOf(query.max.x(), o.x(), level.inv_cell, level.nx);
-  const std::int64_t y0 = cellOf(query.min.y() - level.reach.y(), o.y(), level.inv_cell, level.ny);
-  const std::int64_t y1 = cellOf(query.max.y(), o.y(), level.inv_cell, level.ny);
-  const std::uint32_t* start = level.cell_start.data();
-  const Aabb2* boxes = level.boxes.data();
-  const std::uint32_t* ids = level.ids.data();
-  const Eigen::Vector2d qmin = query.min, qmax = query.max;
-  for (std::int64_t y = y0; y <= y1; ++y) {
-    // The cells x0..x1 of a row are adjacent, so their boxes form one contiguous run.
-    const std::uint32_t begin = start[y * level.nx + x0];
-    const std::uint32_t end = start[y * level.nx + x1 + 1];
-    if (end - begin > found.room()) {
-      found.spill();
-      if (end - begin > found.room()) {
-        // A run longer than the whole buffer (a very dense or very sparse lot): no shortcuts.
-        for (std::uint32_t k = begin; k < end; ++k) {
-          if (boxes[k].overlaps(query)) found.add(ids[k]);
-        }
-        continue;
-      }
-    }
-    // Branchless filter: every id is written, and the count advances only past the overlapping
-    // ones (an overlap test per box is a coin flip that a branch would mispredict).
-    std::uint32_t* dst = found.buffer.data();
-    std::size_t n = found.count;
-    for (std::uint32_t k = begin; k < end; ++k) {
-      dst[n] = ids[k];
-      n += overlapsBranchless(boxes[k], qmin, qmax);
-    }
-    found.count = n;
+void UniformGrid::refreshViews() {
+  views_.clear();
+  for (const Level& l : levels_) {
+    views_.push_back({l.min_x.data(),
+                      l.min_y.data(),
+                      l.max_x.data(),
+                      l.max_y.data(),
+                      l.ids.data(),
+                      l.cell_start.data(),
+                      l.row_bits.data(),
+                      {l.bounds.min.x(), l.bounds.min.y()},
+                      {l.bounds.max.x(), l.bounds.max.y()},
+                      {l.reach.x(), l.reach.y()},
+                      l.inv_cell,
+                      {static_cast<double>(l.nx - 1), static_cast<double>(l.ny - 1)},
+                      l.nx});
   }
 }
 
@@ -234,20 +231,46 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
   out.clear();
   // Also rejects NaN boxes, since every comparison with NaN is false.
   if (size_ == 0 || !query.overlaps(bounds_)) return;
-  Collector found(out);
-  for (const Level& level : levels_) queryLevel(level, query, found);
-  for (std::size_t k = 0; k < large_boxes_.size(); ++k) {
-    if (large_boxes_[k].overlaps(query)) found.add(large_ids_[k]);
+  std::array<std::uint32_t, kQueryBuffer> buffer;  // deliberately not zeroed: written before read
+  grid_detail::IdSink sink{buffer.data(), buffer.size(), 0, &spillInto, &out};
+  const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
+#if defined(CARDEMO_BATCH_AVX2)
+  if (batchPath() != BatchPath::kPortable) {
+    grid_detail::scanLevelsAvx2(views_.data(), views_.size(), box, sink);
+  } else {
+    grid_detail::scanLevelsPortable(views_.data(), views_.size(), box, sink);
   }
-  found.finish();
+#else
+  grid_detail::scanLevelsPortable(views_.data(), views_.size(), box, sink);
+#endif
+  for (std::size_t k = 0; k < large_boxes_.size(); ++k) {
+    if (!large_boxes_[k].overlaps(query)) continue;
+    if (sink.count == sink.capacity) spillInto(sink);
+    buffer[sink.count++] = large_ids_[k];
+  }
+  if (!out.empty()) {
+    // A crowded query spilled: sort everything where it ended up.
+    spillInto(sink);
+    sortIds(out.data(), out.data() + out.size());
+    return;
+  }
+  // The common case: everything fit in the buffer. Sort there, then append one by one (for a
+  // handful of ids cheaper than a call to memmove); `out` keeps its capacity between queries.
+  sortIds(buffer.data(), buffer.data() + sink.count);
+  if (out.capacity() < sink.count) out.reserve(sink.count);
+  for (std::size_t k = 0; k < sink.count; ++k) out.push_back(buffer[k]);
 }
 
 std::size_t UniformGrid::memoryBytes() const {
-  std::size_t bytes = levels_.capacity() * sizeof(Level) + large_boxes_.capacity() * sizeof(Aabb2) +
-                      large_ids_.capacity() * sizeof(std::uint32_t);
+  std::size_t bytes =
+      levels_.capacity() * sizeof(Level) + views_.capacity() * sizeof(grid_detail::LevelArrays) +
+      large_boxes_.capacity() * sizeof(Aabb2) + large_ids_.capacity() * sizeof(std::uint32_t);
   for (const Level& level : levels_) {
-    bytes += level.boxes.capacity() * sizeof(Aabb2) +
-             (level.cell_start.capacity() + level.ids.capacity()) * sizeof(std::uint32_t);
+    bytes += (level.min_x.capacity() + level.min_y.capacity() + level.max_x.capacity() +
+              level.max_y.capacity()) *
+                 sizeof(double) +
+             (level.cell_start.capacity() + level.ids.capacity()) * sizeof(std::uint32_t) +
+             level.row_bits.capacity() * sizeof(std::uint64_t);
   }
   return bytes;
 }

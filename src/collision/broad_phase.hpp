@@ -1,25 +1,37 @@
 #pragma once
 /// Static broad phase over the parked cars and obstacles: a uniform grid built once.
 
-#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "collision/grid_scan.hpp"
 #include "geometry/aabb.hpp"
 
 namespace cardemo {
 
 /// Uniform grids in compressed-sparse-row form over static boxes, one grid per size class. Each
 /// box is stored once, in the cell that holds its lower-left corner, and the cells of a row are
-/// contiguous, so a query scans one contiguous run of boxes per row of cells it reaches. Build is
-/// O(N); a query's cost depends on the boxes near it, not on how many there are. Queries do not
-/// modify the grid, so concurrent queries are safe.
+/// contiguous, so a query scans one contiguous run of boxes per occupied row of cells it reaches,
+/// four boxes per AVX2 instruction (two per SSE2 instruction on CPUs without AVX2; chosen as the
+/// batch kernels are, geometry/batch_path). Build is O(N); a query's cost depends on the boxes
+/// near it, not on how many there are. Queries do not modify the grid, so concurrent queries are
+/// safe.
 class UniformGrid {
  public:
   /// Builds the grid over `boxes` (index i of the span is the item id). Cell sizes follow the
   /// typical box size; the grid covers the union of the boxes. An empty span is allowed.
   explicit UniformGrid(std::span<const Aabb2> boxes);
+  /// Copies (the scans' views of the levels are rebuilt for the copy's own arrays).
+  UniformGrid(const UniformGrid& other);
+  /// Copies (as the copy constructor).
+  UniformGrid& operator=(const UniformGrid& other);
+  /// Moves (the arrays keep their addresses, so do the views).
+  UniformGrid(UniformGrid&& other) noexcept = default;
+  /// Moves.
+  UniformGrid& operator=(UniformGrid&& other) noexcept = default;
+  /// Frees the levels.
+  ~UniformGrid() = default;
 
   /// Appends to `out` (after clearing it) the ids of every box that touches or overlaps `query`,
   /// each once, in increasing id order. Does not allocate once `out` has grown to its peak size.
@@ -33,43 +45,30 @@ class UniformGrid {
   [[nodiscard]] std::size_t levelCount() const { return levels_.size(); }
 
  private:
-  // One grid over the items of one size class. Item k of `boxes`/`ids` lies in the cell of its
-  // lower-left corner; cells are in row-major order, cell c holding [cell_start[c],
-  // cell_start[c+1]).
+  // One grid over the items of one size class, struct of arrays (grid_scan.hpp, LevelArrays): item
+  // k lies in the cell of its lower-left corner; cells are in row-major order, cell c holding
+  // [cell_start[c], cell_start[c+1]). The box arrays and ids hold kScanPadding entries past the
+  // last item, so a scan step may read a whole group of boxes.
   struct Level {
     Aabb2 bounds;           // union of the level's boxes
     double inv_cell = 1.0;  // 1 / cell size, 1/m
     Eigen::Vector2d reach;  // rounded-up largest box extent along x and y, metres
     std::int64_t nx = 0, ny = 0;
     std::vector<std::uint32_t> cell_start;
-    std::vector<Aabb2> boxes;
+    std::vector<double> min_x, min_y, max_x, max_y;
     std::vector<std::uint32_t> ids;
+    std::vector<std::uint64_t> row_bits;  // bit y % 64 of word y / 64: row y holds an item
   };
 
   std::size_t size_ = 0;
   Aabb2 bounds_;
   std::vector<Level> levels_;
+  std::vector<grid_detail::LevelArrays> views_;  // the scans' plain view of each level
   std::vector<Aabb2> large_boxes_;  // items too big for any level: tested by every query
   std::vector<std::uint32_t> large_ids_;
 
-  // Gathers a query's ids in a small buffer on the stack and moves them to `out` when full or at
-  // the end, so the scan writes without bounds checks and `out` is touched once.
-  struct Collector {
-    explicit Collector(std::vector<std::uint32_t>& target) : out(target) {}
-    std::vector<std::uint32_t>& out;
-    std::array<std::uint32_t, 128> buffer;  // deliberately not zeroed: written before read
-    std::size_t count = 0;
-    [[nodiscard]] std::size_t room() const { return buffer.size() - count; }
-    void add(std::uint32_t id) {
-      buffer[count++] = id;
-      if (count == buffer.size()) spill();
-    }
-    void spill();
-    void finish();  // sorted ids into `out`
-  };
-
   static Level buildLevel(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members);
-  static void queryLevel(const Level& level, const Aabb2& query, Collector& found);
+  void refreshViews();
 };
 
 /// Brute-force twin of UniformGrid: tests every box. The reference in tests.

@@ -28,6 +28,24 @@ struct Sat2Out {
   double *nx, *ny;     ///< Normal components, world frame.
 };
 
+/// The float copy of one 2D box (A) that the float pre-filter reads: centre relative to the
+/// batch's reference point (the difference taken in double, then rounded), axis and half extents
+/// rounded to float, and the per-call part of the error bound (batch2_filter.hpp).
+struct Box2FilterOne {
+  float x, y;    ///< Centre minus the batch's reference point, metres.
+  float ux, uy;  ///< Unit local +x axis, world frame.
+  float hx, hy;  ///< Half extents, metres.
+  float bound;   ///< A's share of the decision margin, metres (rounded up).
+};
+
+/// The float copy of many 2D boxes (B), one array per field, for the float pre-filter.
+struct Box2FilterArrays {
+  const float *x, *y;    ///< Centres minus the batch's reference point, metres.
+  const float *ux, *uy;  ///< Unit local +x axes, world frame.
+  const float *hx, *hy;  ///< Half extents, metres.
+  const float* bound;    ///< Each box's share of the decision margin, metres (rounded up).
+};
+
 /// One 3D box, unpacked: the query (A). r[3*j + k] is component k of box axis j (column j).
 struct Box3One {
   double cx, cy, cz;  ///< Centre, metres.
@@ -56,6 +74,19 @@ void overlap2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std:
                   std::uint8_t* hit);
 void collide2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                   const Sat2Out& out);
+// 2D with the float pre-filter (batch2_filter.hpp): same verdicts as overlap2*, bit for bit.
+// Returns how many boxes the filter left undecided and sent to the double kernel.
+std::size_t overlap2FilteredAvx2(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
+                                 const Box2FilterArrays& fb, std::size_t first, std::size_t last,
+                                 std::uint8_t* hit);
+std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
+                                   const Box2FilterArrays& fb, std::size_t first, std::size_t last,
+                                   std::uint8_t* hit);
+// 2D on AVX-512F, eight doubles per lane group (batch2_avx512.cpp).
+void overlap2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                    std::uint8_t* hit);
+void collide2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                    const Sat2Out& out);
 void overlap3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
                   std::uint8_t* hit);
 void separation3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,

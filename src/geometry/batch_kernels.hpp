@@ -75,6 +75,13 @@ CARDEMO_BATCH_INLINE typename L::Mask separated2(const Box2One& a, const Box2Arr
   return out;
 }
 
+// -x where the mask is set, else x. A lane type may provide a cheaper overload (a masked sign
+// flip); any form is exact, since negation only flips the sign bit.
+template <class L, class M>
+CARDEMO_BATCH_INLINE L negateWhere(const M& m, const L& x) {
+  return select(m, -x, x);
+}
+
 template <class L>
 CARDEMO_BATCH_INLINE void collide2(const Box2One& a, const Box2Arrays& b, std::size_t i,
                                    const Sat2Out& out, std::size_t o) {
@@ -105,8 +112,8 @@ CARDEMO_BATCH_INLINE void collide2(const Box2One& a, const Box2Arrays& b, std::s
   // Point the axis from A towards B.
   const typename L::Mask flip = lt(along, L::splat(0.0));
   store(out.separation + o, best);
-  store(out.nx + o, select(flip, -nx, nx));
-  store(out.ny + o, select(flip, -ny, ny));
+  store(out.nx + o, negateWhere(flip, nx));
+  store(out.ny + o, negateWhere(flip, ny));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -275,8 +282,14 @@ void fillTail(const Box3Arrays& b, std::size_t i, std::size_t last,
 template <class L>
 void runOverlap2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                  std::uint8_t* hit) {
+  // The loop works on local copies: a store through `hit` (or `out` below) may alias anything the
+  // references reach, which would reload every pointer and query field after each store.
+  const Box2One a_copy = a;
+  const Box2Arrays b_copy = b;
   std::size_t i = first;
-  for (; i + L::kWidth <= last; i += L::kWidth) storeHits(hit + i, separated2<L>(a, b, i));
+  for (; i + L::kWidth <= last; i += L::kWidth) {
+    storeHits(hit + i, separated2<L>(a_copy, b_copy, i));
+  }
   if (i == last) return;
   PaddedTail<L, Box2Arrays, 6> t;
   fillTail<L>(b, i, last, t);
@@ -288,8 +301,11 @@ void runOverlap2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::
 template <class L>
 void runCollide2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                  const Sat2Out& out) {
+  const Box2One a_copy = a;
+  const Box2Arrays b_copy = b;
+  const Sat2Out out_copy = out;
   std::size_t i = first;
-  for (; i + L::kWidth <= last; i += L::kWidth) collide2<L>(a, b, i, out, i);
+  for (; i + L::kWidth <= last; i += L::kWidth) collide2<L>(a_copy, b_copy, i, out_copy, i);
   if (i == last) return;
   PaddedTail<L, Box2Arrays, 6> t;
   fillTail<L>(b, i, last, t);

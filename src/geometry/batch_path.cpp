@@ -8,14 +8,19 @@
 namespace cardemo {
 namespace {
 
-BatchPath initialPath() {
-  const char* forced = std::getenv("CARDEMO_BATCH_PATH");
-  if (forced != nullptr && std::strcmp(forced, "portable") == 0) return BatchPath::kPortable;
-  return batchPathAvailable(BatchPath::kAvx2) ? BatchPath::kAvx2 : BatchPath::kPortable;
+// The widest available path at or below `wanted`.
+BatchPath widestUpTo(BatchPath wanted) {
+  if (wanted == BatchPath::kAvx512 && batchPathAvailable(BatchPath::kAvx512)) {
+    return BatchPath::kAvx512;
+  }
+  if (wanted != BatchPath::kPortable && batchPathAvailable(BatchPath::kAvx2)) {
+    return BatchPath::kAvx2;
+  }
+  return BatchPath::kPortable;
 }
 
 std::atomic<BatchPath>& chosenPath() {
-  static std::atomic<BatchPath> path{initialPath()};
+  static std::atomic<BatchPath> path{batchPathNamed(std::getenv("CARDEMO_BATCH_PATH"))};
   return path;
 }
 
@@ -23,12 +28,29 @@ std::atomic<BatchPath>& chosenPath() {
 
 bool batchPathAvailable(BatchPath path) {
   if (path == BatchPath::kPortable) return true;
-#if defined(CARDEMO_BATCH_AVX2) && (defined(__x86_64__) || defined(__i386__))
-  // The AVX2 kernels also use FMA (for the error-free products of the 3D edge axes).
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-#else
-  return false;
+#if defined(__x86_64__) || defined(__i386__)
+  // The AVX2 kernels also use FMA (the error-free products of the 3D edge axes, the float
+  // pre-filter); the AVX-512 path keeps the AVX2 3D kernels, so it needs all three. GCC's check
+  // includes the operating system's support for the wider registers (XGETBV).
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#if defined(CARDEMO_BATCH_AVX2)
+  if (path == BatchPath::kAvx2) return avx2;
 #endif
+#if defined(CARDEMO_BATCH_AVX2) && defined(CARDEMO_BATCH_AVX512)
+  if (path == BatchPath::kAvx512) return avx2 && __builtin_cpu_supports("avx512f");
+#endif
+  (void)avx2;
+#endif
+  return false;
+}
+
+BatchPath batchPathNamed(const char* name) {
+  if (name != nullptr) {
+    for (const BatchPath path : {BatchPath::kPortable, BatchPath::kAvx2, BatchPath::kAvx512}) {
+      if (std::strcmp(name, batchPathName(path)) == 0) return widestUpTo(path);
+    }
+  }
+  return widestUpTo(BatchPath::kAvx512);
 }
 
 BatchPath batchPath() {
@@ -41,7 +63,15 @@ void setBatchPath(BatchPath path) {
 }
 
 const char* batchPathName(BatchPath path) {
-  return path == BatchPath::kAvx2 ? "avx2" : "portable";
+  switch (path) {
+    case BatchPath::kAvx2:
+      return "avx2";
+    case BatchPath::kAvx512:
+      return "avx512";
+    case BatchPath::kPortable:
+      break;
+  }
+  return "portable";
 }
 
 }  // namespace cardemo

@@ -3,24 +3,30 @@
 
 namespace cardemo {
 
-/// An implementation of the batch kernels. Both give bit-identical results (same operations in
-/// the same order, no FMA contraction); they differ only in speed.
+/// An implementation of the batch kernels. All give the same results (the 2D ones bit for bit
+/// equal to the scalar functions); they differ only in speed.
 enum class BatchPath {
   kPortable,  ///< One pair at a time, plain C++: runs on any CPU.
   kAvx2,      ///< Four pairs at a time with AVX2 and FMA (x86-64 CPUs that have both).
+  kAvx512,    ///< AVX-512F for the 2D kernels (eight doubles, sixteen floats), AVX2 for 3D.
 };
 
 /// True when `path` was built and the CPU can run it.
 [[nodiscard]] bool batchPathAvailable(BatchPath path);
 
-/// The path in use: AVX2 when available, unless the environment variable CARDEMO_BATCH_PATH is
-/// `portable` at the first call, or setBatchPath chose otherwise.
+/// The path in use: the widest available, unless the environment variable CARDEMO_BATCH_PATH
+/// names another (`portable`, `avx2` or `avx512`) at the first call, or setBatchPath chose
+/// otherwise. A named path the CPU cannot run gives the widest available one below it.
 [[nodiscard]] BatchPath batchPath();
 
-/// Forces a path (tests and benchmarks run both). `path` must be available.
+/// The path that CARDEMO_BATCH_PATH=`name` selects: the widest available one at or below the
+/// named path; the widest available one when `name` is null or names no path.
+[[nodiscard]] BatchPath batchPathNamed(const char* name);
+
+/// Forces a path (tests and benchmarks run each). `path` must be available.
 void setBatchPath(BatchPath path);
 
-/// "portable" or "avx2".
+/// "portable", "avx2" or "avx512".
 [[nodiscard]] const char* batchPathName(BatchPath path);
 
 }  // namespace cardemo

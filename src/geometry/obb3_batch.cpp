@@ -76,7 +76,8 @@ void overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std::uint8
   assert(hit.size() == many.size());
   const batch_detail::Box3One one = unpack(a);
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() == BatchPath::kAvx2) {
+  // The AVX-512 path is 2D only; its 3D kernels are the AVX2 ones.
+  if (batchPath() != BatchPath::kPortable) {
     batch_detail::overlap3Avx2(one, many.arrays(), 0, many.size(), hit.data());
     return;
   }
@@ -88,7 +89,8 @@ void separationObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<double>
   assert(separation.size() == many.size());
   const batch_detail::Box3One one = unpack(a);
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() == BatchPath::kAvx2) {
+  // The AVX-512 path is 2D only; its 3D kernels are the AVX2 ones.
+  if (batchPath() != BatchPath::kPortable) {
     batch_detail::separation3Avx2(one, many.arrays(), 0, many.size(), separation.data());
     return;
   }

@@ -2,13 +2,42 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <memory>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
+
+#include "geometry/batch_path.hpp"
 
 namespace cardemo {
 namespace {
+
+// Every path this build and CPU can run (the grid's scans follow geometry/batch_path): the
+// portable one always, the others where the CPU has them.
+std::vector<BatchPath> availablePaths() {
+  std::vector<BatchPath> paths{BatchPath::kPortable};
+  for (const BatchPath path : {BatchPath::kAvx2, BatchPath::kAvx512}) {
+    if (batchPathAvailable(path)) paths.push_back(path);
+  }
+  return paths;
+}
+
+// Restores the process-wide path when a test ends.
+class PathGuard {
+ public:
+  PathGuard() : saved_(batchPath()) {}
+  ~PathGuard() { setBatchPath(saved_); }
+  PathGuard(const PathGuard&) = delete;
+  PathGuard& operator=(const PathGuard&) = delete;
+
+ private:
+  BatchPath saved_;
+};
 
 Aabb2 box(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y1}};
@@ -80,11 +109,16 @@ void expectTwins(const std::vector<Aabb2>& scene, const std::vector<Aabb2>& quer
   const UniformGrid grid(scene);
   const BruteForceBroadPhase brute(scene);
   std::vector<std::uint32_t> got, want;
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    grid.query(queries[q], got);
-    brute.query(queries[q], want);
-    ASSERT_EQ(got, want) << what << ": query " << q << " [" << queries[q].min.transpose() << "] - ["
-                         << queries[q].max.transpose() << "]";
+  PathGuard guard;
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      grid.query(queries[q], got);
+      brute.query(queries[q], want);
+      ASSERT_EQ(got, want) << what << " on " << batchPathName(path) << ": query " << q << " ["
+                           << queries[q].min.transpose() << "] - [" << queries[q].max.transpose()
+                           << "]";
+    }
   }
 }
 
@@ -184,22 +218,21 @@ TEST(BroadPhase, GridMatchesBruteForceOnSeededScenes) {
     for (std::uint64_t seed = 1; seed <= (n >= 100000 ? 2u : 8u); ++seed) {
       std::mt19937_64 rng(seed * 7919 + n);
       const std::vector<Aabb2> scene = randomScene(n, rng);
-      const UniformGrid grid(scene);
+      ASSERT_EQ(UniformGrid(scene).size(), n);
       const BruteForceBroadPhase brute(scene);
-      ASSERT_EQ(grid.size(), n);
-      std::vector<std::uint32_t> got, want;
+      std::vector<Aabb2> queries;
+      std::vector<std::uint32_t> want;
       int nonempty = 0;
       for (int q = 0; q < 300; ++q) {
-        const Aabb2 query = randomQuery(scene, rng);
-        grid.query(query, got);
-        brute.query(query, want);
-        ASSERT_EQ(got, want) << "n=" << n << " seed=" << seed << " query " << q << " ["
-                             << query.min.transpose() << "] - [" << query.max.transpose() << "]";
+        queries.push_back(randomQuery(scene, rng));
+        brute.query(queries.back(), want);
         nonempty += want.empty() ? 0 : 1;
       }
       if (n >= 10) {
         EXPECT_GT(nonempty, 30) << "n=" << n << ": the scenes must exercise real hits";
       }
+      const std::string what = "n=" + std::to_string(n) + " seed=" + std::to_string(seed);
+      expectTwins(scene, queries, what.c_str());
     }
   }
 }
@@ -209,47 +242,53 @@ TEST(BroadPhase, TouchingBoxesCountAndResultsAreSortedUnique) {
                                  box(20, 20, 21, 21), box(0, 0, 30, 30)};
   const UniformGrid grid(scene);
   std::vector<std::uint32_t> out;
-  grid.query(box(10, 10, 10, 10), out);  // a point on the corner of box 0
-  EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 4}));
-  grid.query(box(12, 1, 20, 20), out);  // touches box 1's corner and box 3's corner
-  EXPECT_EQ(out, (std::vector<std::uint32_t>{1, 3, 4}));
-  grid.query(box(-100, -100, 100, 100), out);
-  EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 1, 2, 3, 4}));
-  grid.query(box(30.000001, 0, 40, 1), out);
-  EXPECT_TRUE(out.empty());
+  PathGuard guard;
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    SCOPED_TRACE(batchPathName(path));
+    grid.query(box(10, 10, 10, 10), out);  // a point on the corner of box 0
+    EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 4}));
+    grid.query(box(12, 1, 20, 20), out);  // touches box 1's corner and box 3's corner
+    EXPECT_EQ(out, (std::vector<std::uint32_t>{1, 3, 4}));
+    grid.query(box(-100, -100, 100, 100), out);
+    EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 1, 2, 3, 4}));
+    grid.query(box(30.000001, 0, 40, 1), out);
+    EXPECT_TRUE(out.empty());
+  }
 }
 
 TEST(BroadPhase, EmptyAndFarQueriesReturnNothing) {
-  const UniformGrid empty(std::span<const Aabb2>{});
-  std::vector<std::uint32_t> out{1, 2, 3};
-  empty.query(box(-1, -1, 1, 1), out);
-  EXPECT_TRUE(out.empty());
-  EXPECT_EQ(empty.size(), 0u);
+  PathGuard guard;
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    SCOPED_TRACE(batchPathName(path));
+    const UniformGrid empty(std::span<const Aabb2>{});
+    std::vector<std::uint32_t> out{1, 2, 3};
+    empty.query(box(-1, -1, 1, 1), out);
+    EXPECT_TRUE(out.empty());
+    EXPECT_EQ(empty.size(), 0u);
 
-  const std::vector<Aabb2> scene{box(0, 0, 1, 1)};
-  const UniformGrid grid(scene);
-  out = {7};
-  grid.query(box(1e300, 1e300, 1e301, 1e301), out);
-  EXPECT_TRUE(out.empty());
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  grid.query(box(nan, nan, nan, nan), out);
-  EXPECT_TRUE(out.empty());
+    const std::vector<Aabb2> scene{box(0, 0, 1, 1)};
+    const UniformGrid grid(scene);
+    out = {7};
+    grid.query(box(1e300, 1e300, 1e301, 1e301), out);
+    EXPECT_TRUE(out.empty());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    grid.query(box(nan, nan, nan, nan), out);
+    EXPECT_TRUE(out.empty());
+    grid.query(box(0, nan, 1, 1), out);
+    EXPECT_TRUE(out.empty());
+  }
 }
 
 TEST(BroadPhase, HugeCoordinatesDoNotOverflowCellIndices) {
   const double big = 1e300;
   const std::vector<Aabb2> scene{box(-big, -big, -big + 1e290, -big + 1e290), box(0, 0, 1, 1),
                                  box(big - 1e290, big - 1e290, big, big), box(2, 2, 3, 3)};
-  const UniformGrid grid(scene);
-  const BruteForceBroadPhase brute(scene);
-  std::vector<std::uint32_t> got, want;
-  for (const Aabb2& q :
-       {box(0.5, 0.5, 2.5, 2.5), box(-big, -big, big, big), box(big, big, big, big),
-        box(-1.7e308, -1.7e308, -1e308, -1e308), box(1, 1, 2, 2)}) {
-    grid.query(q, got);
-    brute.query(q, want);
-    EXPECT_EQ(got, want);
-  }
+  expectTwins(scene,
+              {box(0.5, 0.5, 2.5, 2.5), box(-big, -big, big, big), box(big, big, big, big),
+               box(-1.7e308, -1.7e308, -1e308, -1e308), box(1, 1, 2, 2)},
+              "huge");
 }
 
 TEST(BroadPhase, FarFromOriginMatchesBruteForce) {
@@ -259,15 +298,52 @@ TEST(BroadPhase, FarFromOriginMatchesBruteForce) {
     b.min += Eigen::Vector2d(1e7, -1e7);
     b.max += Eigen::Vector2d(1e7, -1e7);
   }
-  const UniformGrid grid(scene);
+  std::vector<Aabb2> queries;
+  for (int q = 0; q < 500; ++q) queries.push_back(randomQuery(scene, rng));
+  expectTwins(scene, queries, "far");
+}
+
+TEST(BroadPhase, EveryAvailableScanPathIsTestedAndTheFallbackIsAmongThem) {
+  // The twins above run once per path of availablePaths(): check what that list holds, so a
+  // machine without AVX2 still runs (and reports) the portable scan, and one with it runs both.
+  const std::vector<BatchPath> paths = availablePaths();
+  ASSERT_FALSE(paths.empty());
+  EXPECT_EQ(paths.front(), BatchPath::kPortable);
+  EXPECT_NE(std::find(paths.begin(), paths.end(), batchPath()), paths.end())
+      << "the path in use must be one the CPU can run";
+  EXPECT_EQ(std::count(paths.begin(), paths.end(), BatchPath::kAvx2),
+            batchPathAvailable(BatchPath::kAvx2) ? 1 : 0);
+  for (const BatchPath path : paths) std::printf("    scan path %s tested\n", batchPathName(path));
+}
+
+TEST(BroadPhase, CopiesAndMovesQueryTheirOwnArrays) {
+  std::mt19937_64 rng(11);
+  const std::vector<Aabb2> scene = randomScene(3000, rng);
   const BruteForceBroadPhase brute(scene);
-  std::vector<std::uint32_t> got, want;
-  for (int q = 0; q < 500; ++q) {
-    const Aabb2 query = randomQuery(scene, rng);
-    grid.query(query, got);
-    brute.query(query, want);
-    ASSERT_EQ(got, want) << "query " << q;
-  }
+  std::vector<Aabb2> queries;
+  for (int q = 0; q < 300; ++q) queries.push_back(randomQuery(scene, rng));
+  const auto expectMatches = [&](const UniformGrid& grid, const char* what) {
+    std::vector<std::uint32_t> got, want;
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      grid.query(queries[q], got);
+      brute.query(queries[q], want);
+      ASSERT_EQ(got, want) << what << ": query " << q;
+    }
+  };
+  auto original = std::make_unique<UniformGrid>(scene);
+  const UniformGrid copy(*original);
+  UniformGrid assigned(std::span<const Aabb2>{});
+  assigned = *original;
+  original.reset();  // the copies must not point into the freed arrays
+  expectMatches(copy, "copy");
+  expectMatches(assigned, "copy-assigned");
+  UniformGrid moved(std::move(assigned));
+  expectMatches(moved, "moved");
+  UniformGrid move_assigned(std::span<const Aabb2>{});
+  move_assigned = std::move(moved);
+  expectMatches(move_assigned, "move-assigned");
+  EXPECT_EQ(move_assigned.size(), scene.size());
+  EXPECT_EQ(move_assigned.memoryBytes(), copy.memoryBytes());
 }
 
 TEST(BroadPhase, MemoryStaysLinearEvenWithHugeAndSparseBoxes) {

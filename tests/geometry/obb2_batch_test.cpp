@@ -25,7 +25,9 @@ using testing::Random;
 // Every path this build and CPU can run; the fallback is always there.
 std::vector<BatchPath> availablePaths() {
   std::vector<BatchPath> paths{BatchPath::kPortable};
-  if (batchPathAvailable(BatchPath::kAvx2)) paths.push_back(BatchPath::kAvx2);
+  for (const BatchPath path : {BatchPath::kAvx2, BatchPath::kAvx512}) {
+    if (batchPathAvailable(path)) paths.push_back(path);
+  }
   return paths;
 }
 
@@ -267,6 +269,144 @@ TEST(Obb2Batch, TouchingCountsAsHitFarFromTheOrigin) {
   }
 }
 
+// Car-sized pairs as the benchmark draws them: B within `reach` of A, any heading.
+std::vector<Obb2> carsAround(const Obb2& a, Random& rng, int n, double reach) {
+  std::vector<Obb2> boxes;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d c = a.center + rng.direction() * reach * std::sqrt(rng.uniform(0, 1));
+    boxes.push_back({c, rng.direction(), {rng.uniform(1.75, 2.75), rng.uniform(0.8, 1.1)}});
+  }
+  return boxes;
+}
+
+TEST(Obb2Batch, FloatFilterDecidesAlmostEveryRandomPair) {
+  PathGuard guard;
+  Random rng(31);
+  std::size_t pairs = 0, sent_on = 0;
+  for (int k = 0; k < testing::scaledCount(200); ++k) {
+    const Obb2 a{rng.farPoint(1e7), rng.direction(), {2.25, 0.9}};
+    const std::vector<Obb2> boxes = carsAround(a, rng, 500, 6.0);
+    const Obb2Batch many(boxes);
+    ASSERT_TRUE(many.filterUsable());
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      std::vector<std::uint8_t> hit(boxes.size());
+      const std::size_t undecided = overlapObb2Batch(a, many, hit);
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        ASSERT_EQ(hit[i], overlapObb2(a, boxes[i]) ? 1 : 0) << batchPathName(path) << " " << i;
+      }
+      if (path == BatchPath::kPortable) {
+        EXPECT_EQ(undecided, 0u) << "the portable path has no filter";
+      } else {
+        pairs += boxes.size();
+        sent_on += undecided;
+      }
+    }
+  }
+  // Only pairs within about 1e-4 m of touching are left to the double kernel: a handful in 1e5.
+  EXPECT_LE(sent_on * 1000, pairs) << sent_on << " of " << pairs;
+  std::printf("    %zu of %zu pairs sent to the double kernel\n", sent_on, pairs);
+}
+
+// Pairs a hair from touching on a random axis, where the filter must hand over to double: gaps
+// of either sign from 1e-12 m to 1 mm, boxes from 1 cm to 100 m, the query near the batch or far
+// from its reference point, batches spread over up to 1e4 m, 1e7 m from the origin.
+TEST(Obb2Batch, NearTouchingPairsAtTheFilterMarginMatchScalar) {
+  PathGuard guard;
+  Random rng(4242);
+  std::size_t pairs = 0, sent_on = 0;
+  for (int k = 0; k < testing::scaledCount(1500); ++k) {
+    const Eigen::Vector2d origin =
+        rng.integer(0, 1) == 0 ? Eigen::Vector2d::Zero() : rng.farPoint(1e7);
+    const Obb2 a = rng.integer(0, 1) == 0 ? rng.extremeBox(origin) : rng.box(origin, 0.01, 100.0);
+    std::vector<Obb2> boxes;
+    const int n = rng.integer(1, 40);
+    for (int i = 0; i < n; ++i) {
+      Obb2 b = rng.integer(0, 2) == 0 ? rng.extremeBox({0, 0}) : rng.box({0, 0}, 0.01, 100.0);
+      const int axis = rng.integer(0, 3);
+      const Eigen::Vector2d d = rng.sign() * (axis == 0   ? a.axis
+                                              : axis == 1 ? a.perp()
+                                              : axis == 2 ? b.axis
+                                                          : b.perp());
+      const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
+      const Eigen::Vector2d lateral{-d.y(), d.x()};
+      b.center = a.center + d * (reach + rng.sign() * rng.logUniform(1e-12, 1e-3)) +
+                 lateral * rng.uniform(-0.4, 0.4) * std::min(a.half.minCoeff(), b.half.minCoeff());
+      boxes.push_back(b);
+    }
+    // Now and then a far box widens the batch, which moves its reference point away from A.
+    if (rng.integer(0, 3) == 0) boxes.push_back(rng.box(a.center + rng.farPoint(1e4), 1.0, 5.0));
+    const Obb2Batch many(boxes);
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      std::vector<std::uint8_t> hit(boxes.size());
+      const std::size_t undecided = overlapObb2Batch(a, many, hit);
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        ASSERT_EQ(hit[i], overlapObb2(a, boxes[i]) ? 1 : 0)
+            << batchPathName(path) << " batch " << k << " box " << i;
+      }
+      if (path != BatchPath::kPortable) {
+        pairs += boxes.size();
+        sent_on += undecided;
+      }
+    }
+  }
+  if (pairs > 0) {
+    // Gaps below the margin must reach the double kernel, and wider ones must not all do so.
+    EXPECT_GT(sent_on, pairs / 10);
+    EXPECT_LT(sent_on, pairs * 9 / 10);
+  }
+}
+
+TEST(Obb2Batch, TinyHugeAndOutOfRangeBoxesMatchScalar) {
+  PathGuard guard;
+  Random rng(8);
+  // Half extents down to 1e-40 m (float underflows), coordinates up to 1e25 m (past the filter's
+  // 2^60 m range: that batch and that query go to the double kernel whole).
+  const Obb2 small_a{{3.0, -1.0}, rng.direction(), {1e-40, 3e-41}};
+  const Obb2 far_a{{1e25, -2e24}, rng.direction(), {2.0, 1.0}};
+  const Obb2 plain_a{{0.5, 0.25}, rng.direction(), {2.0, 1.0}};
+  std::vector<Obb2> tiny{small_a,
+                         {{3.0, -1.0}, rng.direction(), {2e-40, 1e-45}},
+                         {{3.0 + 1e-39, -1.0}, rng.direction(), {1e-40, 1e-40}},
+                         {{3.0, -1.0 + 1e-30}, rng.direction(), {1e-40, 1e-40}}};
+  for (int i = 0; i < 20; ++i) tiny.push_back(rng.box(plain_a.center + rng.direction(), 1e-6, 3.0));
+  std::vector<Obb2> huge = tiny;
+  huge.push_back({{1e25, -2e24}, rng.direction(), {3.0, 1.0}});
+  const Obb2Batch tiny_batch(tiny), huge_batch(huge);
+  EXPECT_TRUE(tiny_batch.filterUsable());
+  EXPECT_FALSE(huge_batch.filterUsable());
+  for (const BatchPath path : availablePaths()) {
+    setBatchPath(path);
+    for (const Obb2* a : {&small_a, &far_a, &plain_a}) {
+      for (const auto* batch : {&tiny, &huge}) {
+        const Obb2Batch& many = batch == &tiny ? tiny_batch : huge_batch;
+        std::vector<std::uint8_t> hit(batch->size());
+        const std::size_t undecided = overlapObb2Batch(*a, many, hit);
+        for (std::size_t i = 0; i < batch->size(); ++i) {
+          ASSERT_EQ(hit[i], overlapObb2(*a, (*batch)[i]) ? 1 : 0) << batchPathName(path) << i;
+        }
+        const bool whole = path != BatchPath::kPortable && (a == &far_a || batch == &huge);
+        if (whole) {
+          EXPECT_EQ(undecided, batch->size()) << batchPathName(path);
+        }
+      }
+    }
+  }
+}
+
+TEST(BatchPath, TheEnvironmentNamesEachPathAndFallsBackToANarrowerOne) {
+  const std::vector<BatchPath> paths = availablePaths();
+  const BatchPath widest = paths.back();
+  EXPECT_EQ(batchPathNamed(nullptr), widest);
+  EXPECT_EQ(batchPathNamed("fastest"), widest);
+  EXPECT_EQ(batchPathNamed("portable"), BatchPath::kPortable);
+  EXPECT_EQ(batchPathNamed("avx2"),
+            batchPathAvailable(BatchPath::kAvx2) ? BatchPath::kAvx2 : BatchPath::kPortable);
+  EXPECT_EQ(batchPathNamed("avx512"), widest);
+  for (const BatchPath path : paths) EXPECT_EQ(batchPathNamed(batchPathName(path)), path);
+}
+
 TEST(BatchPath, ForcingTheFallbackSticksAndAvx2IsUsedWhenAvailable) {
   PathGuard guard;
   setBatchPath(BatchPath::kPortable);
@@ -274,11 +414,20 @@ TEST(BatchPath, ForcingTheFallbackSticksAndAvx2IsUsedWhenAvailable) {
   EXPECT_TRUE(batchPathAvailable(BatchPath::kPortable));
   EXPECT_STREQ(batchPathName(BatchPath::kPortable), "portable");
   EXPECT_STREQ(batchPathName(BatchPath::kAvx2), "avx2");
+  EXPECT_STREQ(batchPathName(BatchPath::kAvx512), "avx512");
+  // The wider path is only there with the narrower one (it keeps the AVX2 3D kernels).
+  if (batchPathAvailable(BatchPath::kAvx512)) {
+    EXPECT_TRUE(batchPathAvailable(BatchPath::kAvx2));
+  }
 #if defined(__x86_64__)
   // This project's CPUs (and CI's) have AVX2; a build without the AVX2 file says so.
   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
     std::printf("    AVX2 path %s\n",
                 batchPathAvailable(BatchPath::kAvx2) ? "available" : "not built");
+  }
+  if (__builtin_cpu_supports("avx512f")) {
+    std::printf("    AVX-512 path %s\n",
+                batchPathAvailable(BatchPath::kAvx512) ? "available" : "not built");
   }
 #endif
 }

@@ -1,0 +1,131 @@
+#pragma once
+/// Internal to the grid scans: the parts both versions share (the window of cells a query
+/// reaches, the walk over its occupied rows, the whole scan given a step).
+//
+// Internal linkage only: included by grid_scan_portable.cpp and grid_scan_avx2.cpp, each of which
+// gets its own copy (compiled with its own instruction set).
+
+#include <cstdint>
+
+#include "collision/grid_scan.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace cardemo::grid_detail {
+namespace {
+
+// The cells [x0, x1] x [y0, y1] of a level that hold the lower-left corner of every box that may
+// touch the query.
+struct Window {
+  std::int64_t x0, x1, y0, y1;
+};
+
+// Cell index of coordinate x: the same IEEE operations as cellOf in broad_phase.cpp (which builds
+// the level), so a box's corner and the query's window agree on cells. Clamped while still a
+// double (a huge or NaN coordinate cannot overflow the conversion); the map is monotone.
+[[gnu::always_inline]] inline std::int64_t cellIndex(double x, double origin, double inv_cell,
+                                                     double last) {
+  double t = (x - origin) * inv_cell;
+  t = 0.0 < t ? t : 0.0;  // std::max(0.0, t): NaN goes to 0
+  t = last < t ? last : t;
+  return static_cast<std::int64_t>(t);
+}
+
+// An overlapping box has its corner at or above query.min - reach (broad_phase.cpp, buildLevel),
+// and the cell map is monotone, so these cells hold every box that may touch the query.
+[[gnu::always_inline]] inline Window windowOf(const LevelArrays& l, const QueryBox& q) {
+#if defined(__SSE2__)
+  // Both axes at once; max(t, 0) returns its second operand (0) for NaN, as cellIndex does.
+  const __m128d origin = _mm_loadu_pd(l.bounds_min), inv = _mm_set1_pd(l.inv_cell);
+  const __m128d last = _mm_loadu_pd(l.last_cell), zero = _mm_setzero_pd();
+  const __m128d low = _mm_sub_pd(_mm_loadu_pd(q.min), _mm_loadu_pd(l.reach));
+  const __m128d lo = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(low, origin), inv), zero), last);
+  const __m128d hi =
+      _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(q.max), origin), inv), zero), last);
+  // Cell indices are below 2^30, so 32-bit conversions are exact.
+  const __m128i lo_cells = _mm_cvttpd_epi32(lo), hi_cells = _mm_cvttpd_epi32(hi);
+  return {_mm_cvtsi128_si32(lo_cells), _mm_cvtsi128_si32(hi_cells),
+          _mm_cvtsi128_si32(_mm_shuffle_epi32(lo_cells, 1)),
+          _mm_cvtsi128_si32(_mm_shuffle_epi32(hi_cells, 1))};
+#else
+  return {cellIndex(q.min[0] - l.reach[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
+          cellIndex(q.max[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
+          cellIndex(q.min[1] - l.reach[1], l.bounds_min[1], l.inv_cell, l.last_cell[1]),
+          cellIndex(q.max[1], l.bounds_min[1], l.inv_cell, l.last_cell[1])};
+#endif
+}
+
+// True when the query touches the level's bounds (false for a NaN query).
+[[gnu::always_inline]] inline bool touchesBounds(const LevelArrays& l, const QueryBox& q) {
+  return (l.bounds_min[0] <= q.max[0]) & (q.min[0] <= l.bounds_max[0]) &
+         (l.bounds_min[1] <= q.max[1]) & (q.min[1] <= l.bounds_max[1]);
+}
+
+// The first occupied row at or after y, or a row past y_last when there is none up to y_last.
+// Empty rows (aisles, the gaps between parking rows) cost a bit scan, not two offset loads.
+[[gnu::always_inline]] inline std::int64_t nextOccupiedRow(const std::uint64_t* row_bits,
+                                                           std::int64_t y, std::int64_t y_last) {
+  std::uint64_t word = row_bits[y >> 6] >> (y & 63);
+  while (word == 0) {
+    y = (y | 63) + 1;
+    if (y > y_last) return y;
+    word = row_bits[y >> 6];
+  }
+  return y + __builtin_ctzll(word);
+}
+
+// A level's box arrays, copied into a local before a scan: the scans store ids through
+// may-alias vector stores, which would otherwise reload every pointer after each store.
+struct Boxes {
+  const double *min_x, *min_y, *max_x, *max_y;
+  const std::uint32_t* ids;
+};
+
+// The whole scan, given step(boxes, k, end, buffer, count): tests the boxes [k, k + kWidth) of a
+// row whose boxes end at `end`, writes kWidth slots at buffer[count] (the found ids first) and
+// returns the new count.
+template <std::uint32_t kWidth, class Step>
+[[gnu::always_inline]] inline void scanLevels(const LevelArrays* levels, std::size_t level_count,
+                                              const QueryBox& q, IdSink& sink, const Step& step) {
+  std::uint32_t* const buffer = sink.buffer;
+  const std::size_t capacity = sink.capacity;
+  std::size_t count = sink.count;
+  for (std::size_t i = 0; i < level_count; ++i) {
+    const LevelArrays& l = levels[i];
+    if (!touchesBounds(l, q)) continue;
+    const Window w = windowOf(l, q);
+    const Boxes boxes{l.min_x, l.min_y, l.max_x, l.max_y, l.ids};
+    const std::uint32_t* const cell_start = l.cell_start;
+    const std::uint64_t* const row_bits = l.row_bits;
+    const std::int64_t nx = l.nx;
+    for (std::int64_t y = w.y0;; ++y) {
+      y = nextOccupiedRow(row_bits, y, w.y1);
+      if (y > w.y1) break;
+      const std::int64_t first_cell = y * nx;
+      std::uint32_t k = cell_start[first_cell + w.x0];
+      const std::uint32_t end = cell_start[first_cell + w.x1 + 1];
+      if (end - k + kScanStep <= capacity - count) [[likely]] {
+        // One step whatever the row holds (an empty row's lanes are all masked): most rows hold
+        // a handful of boxes, and a fixed step costs less than the branches that would skip it.
+        count = step(boxes, k, end, buffer, count);
+        for (k += kWidth; k < end; k += kWidth) count = step(boxes, k, end, buffer, count);
+        continue;
+      }
+      // The row's boxes may not fit in what is left of the buffer: empty it when needed.
+      for (; k < end; k += kWidth) {
+        if (capacity - count < kScanStep) {
+          sink.count = count;
+          sink.flush(sink);
+          count = sink.count;
+        }
+        count = step(boxes, k, end, buffer, count);
+      }
+    }
+  }
+  sink.count = count;
+}
+
+}  // namespace
+}  // namespace cardemo::grid_detail

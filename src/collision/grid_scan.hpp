@@ -1,0 +1,61 @@
+#pragma once
+/// Internal to UniformGrid: a query's scan over the levels' cells, in two versions chosen at run
+/// time (geometry/batch_path): two boxes per SSE2 instruction (the x86-64 baseline, scalar
+/// elsewhere) and four per AVX2 instruction. Both find the same boxes in the same order.
+//
+// Free of Eigen and of the standard library's inline code, so the AVX2 translation unit
+// instantiates nothing the linker could share with the rest (as geometry/batch_entry.hpp).
+
+#include <cstddef>
+#include <cstdint>
+
+namespace cardemo::grid_detail {
+
+/// Where a scan writes the ids it finds: buffer[0, count), emptied by `flush` (which moves them
+/// out and sets count to 0) whenever fewer than kScanStep slots are left.
+struct IdSink {
+  std::uint32_t* buffer;        ///< Ids found, in scan order.
+  std::size_t capacity;         ///< Slots in buffer (at least kScanStep).
+  std::size_t count;            ///< Slots in use.
+  void (*flush)(IdSink& sink);  ///< Empties the buffer.
+  void* owner;                  ///< For flush: where the ids go.
+};
+
+/// Largest number of slots one step of a scan writes (every slot, not only the hits).
+inline constexpr std::size_t kScanStep = 4;
+
+/// Entries past the last box of a level's arrays, so a step may read a whole group of boxes (a
+/// step may start at the end of the arrays, for an empty last row).
+inline constexpr std::size_t kScanPadding = kScanStep;
+
+/// One level of the grid as plain data, struct of arrays: box k is [min_x[k], max_x[k]] x
+/// [min_y[k], max_y[k]] in world metres, with item id ids[k]; boxes are grouped by the cell of
+/// their lower-left corner, cells in row-major order, cell c holding [cell_start[c],
+/// cell_start[c + 1]). Bit y % 64 of row_bits[y / 64] is set when row y holds a box.
+struct LevelArrays {
+  const double *min_x, *min_y, *max_x, *max_y;  ///< Box bounds, metres.
+  const std::uint32_t* ids;                     ///< Item ids.
+  const std::uint32_t* cell_start;              ///< nx * ny + 1 offsets.
+  const std::uint64_t* row_bits;                ///< Occupied rows.
+  double bounds_min[2], bounds_max[2];          ///< Union of the level's boxes (x, y), metres.
+  double reach[2];                              ///< Rounded-up largest box extent (x, y), metres.
+  double inv_cell;                              ///< 1 / cell size, 1/m.
+  double last_cell[2];                          ///< nx - 1 and ny - 1 (at most 2^30 - 1 each).
+  std::int64_t nx;                              ///< Cells per row.
+};
+
+/// A query box, closed, world metres.
+struct QueryBox {
+  double min[2];  ///< Lower-left corner (x, y).
+  double max[2];  ///< Upper-right corner (x, y).
+};
+
+/// Writes to `sink` the id of every box of `levels[0, level_count)` that touches or overlaps the
+/// query: level by level, row by row, in storage order. The query must not be NaN.
+void scanLevelsPortable(const LevelArrays* levels, std::size_t level_count, const QueryBox& query,
+                        IdSink& sink);
+/// The same with AVX2; call only when geometry/batch_path says the CPU has it.
+void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& query,
+                    IdSink& sink);
+
+}  // namespace cardemo::grid_detail

@@ -1,0 +1,141 @@
+// The 2D batch kernels with AVX-512F: the boolean SAT through the float pre-filter, sixteen pairs
+// per instruction, and both double kernels eight pairs per instruction (the SAT with separation
+// and normal, and the boolean SAT for the lane groups the filter leaves undecided). Built with
+// -mavx512f (CMakeLists.txt) and called only after batchPathAvailable says the CPU has it. 2D only:
+// on this path the 3D kernels run their AVX2 versions.
+//
+// Includes nothing but the intrinsics and the kernel headers, for the reason given in
+// batch_avx2.cpp.
+
+#if defined(CARDEMO_BATCH_AVX512)
+#if !defined(__AVX512F__)
+#error "batch2_avx512.cpp needs -mavx512f (set in CMakeLists.txt)"
+#endif
+
+#include <immintrin.h>
+
+#include "geometry/batch2_filter.hpp"
+#include "geometry/batch_kernels.hpp"
+
+namespace cardemo::batch_detail {
+namespace {
+
+// ----- sixteen floats: the pre-filter
+
+struct Float16 {
+  static constexpr std::size_t kWidth = 16;
+  __m512 v;
+  static Float16 load(const float* p) { return {_mm512_loadu_ps(p)}; }
+  static Float16 splat(float x) { return {_mm512_set1_ps(x)}; }
+};
+
+[[gnu::always_inline]] inline Float16 operator+(Float16 a, Float16 b) {
+  return {_mm512_add_ps(a.v, b.v)};
+}
+[[gnu::always_inline]] inline Float16 operator-(Float16 a, Float16 b) {
+  return {_mm512_sub_ps(a.v, b.v)};
+}
+[[gnu::always_inline]] inline Float16 operator*(Float16 a, Float16 b) {
+  return {_mm512_mul_ps(a.v, b.v)};
+}
+[[gnu::always_inline]] inline Float16 fmadd(Float16 a, Float16 b, Float16 c) {
+  return {_mm512_fmadd_ps(a.v, b.v, c.v)};
+}
+[[gnu::always_inline]] inline Float16 fmsub(Float16 a, Float16 b, Float16 c) {
+  return {_mm512_fmsub_ps(a.v, b.v, c.v)};
+}
+[[gnu::always_inline]] inline Float16 fnmadd(Float16 a, Float16 b, Float16 c) {
+  return {_mm512_fnmadd_ps(a.v, b.v, c.v)};
+}
+[[gnu::always_inline]] inline Float16 abs(Float16 a) {
+  return {_mm512_abs_ps(a.v)};
+}
+// The zero-masked form with every lane on is plain vmaxps; GCC 12 warns about the uninitialised
+// source operand of _mm512_max_ps (GCC bug 105593).
+[[gnu::always_inline]] inline Float16 max(Float16 a, Float16 b) {
+  return {_mm512_maskz_max_ps(static_cast<__mmask16>(0xFFFF), a.v, b.v)};
+}
+[[gnu::always_inline]] inline unsigned gtBits(Float16 a, Float16 b) {
+  return static_cast<unsigned>(_mm512_cmp_ps_mask(a.v, b.v, _CMP_GT_OQ));
+}
+
+// ----- eight doubles: the double kernels of batch_kernels.hpp
+
+struct Mask8 {
+  __mmask8 m;
+};
+
+struct Double8 {
+  static constexpr std::size_t kWidth = 8;
+  using Mask = Mask8;
+  __m512d v;
+  static Double8 load(const double* p) { return {_mm512_loadu_pd(p)}; }
+  static Double8 splat(double x) { return {_mm512_set1_pd(x)}; }
+};
+
+[[gnu::always_inline]] inline Double8 operator+(Double8 a, Double8 b) {
+  return {_mm512_add_pd(a.v, b.v)};
+}
+[[gnu::always_inline]] inline Double8 operator-(Double8 a, Double8 b) {
+  return {_mm512_sub_pd(a.v, b.v)};
+}
+[[gnu::always_inline]] inline Double8 operator*(Double8 a, Double8 b) {
+  return {_mm512_mul_pd(a.v, b.v)};
+}
+// Flipping the sign bit is exactly what scalar negation does, zeros and NaNs included.
+[[gnu::always_inline]] inline Double8 operator-(Double8 a) {
+  return {_mm512_castsi512_pd(
+      _mm512_xor_si512(_mm512_castpd_si512(a.v), _mm512_castpd_si512(_mm512_set1_pd(-0.0))))};
+}
+[[gnu::always_inline]] inline Double8 abs(Double8 a) {
+  return {_mm512_abs_pd(a.v)};
+}
+// Ordered, non-signalling: false for NaN, as the scalar operators.
+[[gnu::always_inline]] inline Mask8 gt(Double8 a, Double8 b) {
+  return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ)};
+}
+[[gnu::always_inline]] inline Mask8 lt(Double8 a, Double8 b) {
+  return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ)};
+}
+[[gnu::always_inline]] inline Mask8 operator|(Mask8 a, Mask8 b) {
+  return {static_cast<__mmask8>(a.m | b.m)};
+}
+[[gnu::always_inline]] inline Double8 select(Mask8 m, Double8 a, Double8 b) {
+  return {_mm512_mask_blend_pd(m.m, b.v, a.v)};
+}
+[[gnu::always_inline]] inline Double8 negateWhere(Mask8 m, Double8 a) {
+  return {_mm512_castsi512_pd(_mm512_mask_xor_epi64(_mm512_castpd_si512(a.v), m.m,
+                                                    _mm512_castpd_si512(a.v),
+                                                    _mm512_castpd_si512(_mm512_set1_pd(-0.0))))};
+}
+[[gnu::always_inline]] inline void store(double* p, Double8 a) {
+  _mm512_storeu_pd(p, a.v);
+}
+[[gnu::always_inline]] inline void storeHits(std::uint8_t* p, Mask8 separated) {
+  const std::uint64_t bytes = hitBytes(separated.m);
+  __builtin_memcpy(p, &bytes, 8);
+}
+
+}  // namespace
+
+std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
+                                   const Box2FilterArrays& fb, std::size_t first, std::size_t last,
+                                   std::uint8_t* hit) {
+  return runFilteredOverlap2<Float16>(
+      fa, fb, first, last, hit,
+      [&](std::size_t i0, std::size_t i1) { runOverlap2<Double8>(a, b, i0, i1, hit); });
+}
+
+void overlap2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                    std::uint8_t* hit) {
+  runOverlap2<Double8>(a, b, first, last, hit);
+}
+
+void collide2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
+                    const Sat2Out& out) {
+  runCollide2<Double8>(a, b, first, last, out);
+}
+
+}  // namespace cardemo::batch_detail
+
+#endif
