@@ -81,6 +81,9 @@ struct Lane4 {
   const std::uint32_t bytes = ((bits * 0x00204081u) & 0x01010101u) ^ 0x01010101u;
   __builtin_memcpy(p, &bytes, sizeof bytes);
 }
+[[gnu::always_inline]] inline bool allOf(Mask4 m) {
+  return _mm256_movemask_pd(m.m) == 0xF;
+}
 
 }  // namespace
 

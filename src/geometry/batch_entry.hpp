@@ -51,6 +51,12 @@ struct Box3One {
   double cx, cy, cz;  ///< Centre, metres.
   double r[9];        ///< Rotation columns, column-major.
   double hx, hy, hz;  ///< Half extents, metres.
+  /// Bound on the error of an A-frame edge gap (gap times axis length) per metre of the pair's
+  /// scale, for this A against the batch's boxes (+infinity: every lane takes the accurate path).
+  double edge_gap_error;
+  /// Squared A-frame edge-axis length above which that axis's normalised gap is within
+  /// kSeparationTolerance (batch_kernels.hpp) times the pair's scale.
+  double min_edge_length2;
 };
 
 /// Many 3D boxes (B), one array per field; r[3*j + k] holds component k of column j.

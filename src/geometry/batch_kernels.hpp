@@ -5,7 +5,8 @@
 ///
 /// A lane type L provides: L::kWidth, L::Mask, L::load(const double*), L::splat(double),
 /// + - * / and unary -, abs, sqrt, fma (correctly rounded a*b+c), gt, lt, mask | and &,
-/// select(mask, if_true, if_false), store(double*, L) and storeHits(uint8_t*, separated mask).
+/// select(mask, if_true, if_false), store(double*, L), storeHits(uint8_t*, separated mask) and
+/// allOf(mask) (true when every lane is set; the 3D filter branches on it).
 //
 // Included by exactly two translation units, batch_portable.cpp and batch_avx2.cpp (the latter
 // compiled with -mavx2 -mfma). Everything here has internal linkage, so the linker can never
@@ -15,6 +16,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include "geometry/batch_entry.hpp"
 
@@ -24,6 +27,20 @@
 
 namespace cardemo::batch_detail {
 namespace {
+
+// Calls f(std::integral_constant<int, K>{}) for K = 0, ..., N - 1. The 3D kernels index arrays of
+// lanes by axis; with runtime loop indices GCC at -O2 keeps those arrays on the stack and loops
+// over them, with compile-time indices (and the 3D drivers flattened, so that these lambdas are
+// inlined too) every lane is a named value the compiler can keep in a register.
+template <class F, int... K>
+CARDEMO_BATCH_INLINE void staticForEach(const F& f, std::integer_sequence<int, K...>) {
+  (f(std::integral_constant<int, K>{}), ...);
+}
+
+template <int N, class F>
+CARDEMO_BATCH_INLINE void staticFor(const F& f) {
+  staticForEach(f, std::make_integer_sequence<int, N>{});
+}
 
 // ---------------------------------------------------------------------------------------------
 // 2D: the same expressions, in the same order, as overlapObb2 / collideObb2 (sat_obb2.cpp), so a
@@ -166,7 +183,10 @@ struct Pair3Lanes {
   V3<L> a[3];  // A's axes (the same in every lane)
   V3<L> b[3];  // B's axes
   L ha[3], hb[3];
-  L face[6];  // gaps on A's faces 0-2 and B's faces 0-2
+  L t[3];        // d in A's frame: a_k . d
+  L R[3][3];     // a_k . b_j
+  L absR[3][3];  // |a_k . b_j|
+  L face[6];     // gaps on A's faces 0-2 and B's faces 0-2
 };
 
 template <class L>
@@ -185,18 +205,22 @@ CARDEMO_BATCH_INLINE Pair3Lanes<L> pair3(const Box3One& a, const Box3Arrays& b, 
   p.hb[1] = L::load(b.hy + i);
   p.hb[2] = L::load(b.hz + i);
   // Face axes (Gottschalk et al. 1996; Ericson, RTCD 4.4.1): |A^T B| and the offset in each frame.
-  L absR[3][3];
-  for (int k = 0; k < 3; ++k) {
-    for (int j = 0; j < 3; ++j) absR[k][j] = abs(dot(p.a[k], p.b[j]));
-  }
-  for (int k = 0; k < 3; ++k) {
-    const L rb = absR[k][0] * p.hb[0] + absR[k][1] * p.hb[1] + absR[k][2] * p.hb[2];
-    p.face[k] = abs(dot(p.a[k], p.d)) - p.ha[k] - rb;
-  }
-  for (int j = 0; j < 3; ++j) {
-    const L ra = absR[0][j] * p.ha[0] + absR[1][j] * p.ha[1] + absR[2][j] * p.ha[2];
+  staticFor<9>([&p](auto e) {
+    constexpr int k = decltype(e)::value / 3, j = decltype(e)::value % 3;
+    p.R[k][j] = dot(p.a[k], p.b[j]);
+    p.absR[k][j] = abs(p.R[k][j]);
+  });
+  staticFor<3>([&p](auto kc) {
+    constexpr int k = decltype(kc)::value;
+    const L rb = p.absR[k][0] * p.hb[0] + p.absR[k][1] * p.hb[1] + p.absR[k][2] * p.hb[2];
+    p.t[k] = dot(p.a[k], p.d);
+    p.face[k] = abs(p.t[k]) - p.ha[k] - rb;
+  });
+  staticFor<3>([&p](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    const L ra = p.absR[0][j] * p.ha[0] + p.absR[1][j] * p.ha[1] + p.absR[2][j] * p.ha[2];
     p.face[3 + j] = abs(dot(p.b[j], p.d)) - p.hb[j] - ra;
-  }
+  });
   return p;
 }
 
@@ -218,11 +242,11 @@ CARDEMO_BATCH_INLINE typename L::Mask separated3(const Box3One& a, const Box3Arr
   const Pair3Lanes<L> p = pair3<L>(a, b, i);
   const L zero = L::splat(0.0);
   typename L::Mask out = gt(p.face[0], zero);
-  for (int k = 1; k < 6; ++k) out = out | gt(p.face[k], zero);
-  for (int e = 0; e < 9; ++e) {
-    const EdgeGap<L> g = edgeGap(p, e / 3, e % 3);
+  staticFor<5>([&](auto k) { out = out | gt(p.face[decltype(k)::value + 1], zero); });
+  staticFor<9>([&](auto e) {
+    const EdgeGap<L> g = edgeGap(p, decltype(e)::value / 3, decltype(e)::value % 3);
     out = out | (g.valid & gt(g.gap, zero));
-  }
+  });
   return out;
 }
 
@@ -230,13 +254,175 @@ template <class L>
 CARDEMO_BATCH_INLINE L separation3(const Box3One& a, const Box3Arrays& b, std::size_t i) {
   const Pair3Lanes<L> p = pair3<L>(a, b, i);
   L best = p.face[0];
-  for (int k = 1; k < 6; ++k) best = select(gt(p.face[k], best), p.face[k], best);
-  for (int e = 0; e < 9; ++e) {
-    const EdgeGap<L> g = edgeGap(p, e / 3, e % 3);
+  staticFor<5>([&](auto kc) {
+    const L& face = p.face[decltype(kc)::value + 1];
+    best = select(gt(face, best), face, best);
+  });
+  staticFor<9>([&](auto e) {
+    const EdgeGap<L> g = edgeGap(p, decltype(e)::value / 3, decltype(e)::value % 3);
     const L gap = g.gap / sqrt(g.length2);
     best = select(g.valid & gt(gap, best), gap, best);
-  }
+  });
   return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3D, fast: the A-frame filter (docs/architecture.md, "Batch kernels"). The edge axis a_i x b_j in
+// A's frame is e_i x (A^T b_j), whose gap (Gottschalk et al. 1996) needs only entries of R = A^T B
+// and of t = A^T d, both already formed for the face axes: about a dozen operations per axis
+// instead of fifty. Its error against the gap on the stored columns' exact cross product, which
+// the accurate kernel computes to a few ulps, is bounded (Box3One::edge_gap_error): a lane is
+// decided when every gap clears that bound, or a face or edge gap certainly separates; the rest
+// (near touching, or edges too close to parallel for the A-frame form) go to the accurate kernel,
+// so every verdict is the accurate kernel's.
+
+// The accurate kernel skips an edge axis whose squared length is at most kMinAxisLength2; this is
+// the next double up, so lt(length2, it) is exactly that skip.
+constexpr double kSkippedBelow = 0x1.0000000000001p-960;
+// Separations from the filter are within kSeparationTolerance times the pair's scale of the
+// accurate kernel's (Box3One::min_edge_length2 is set for it).
+constexpr double kSeparationTolerance = 0x1p-40;
+
+// The pair's scale: |d|_1 plus every half extent; it bounds |d|, each projected radius and, so,
+// each gap on a unit axis.
+template <class L>
+CARDEMO_BATCH_INLINE L scale3(const Pair3Lanes<L>& p) {
+  return abs(p.d.x) + abs(p.d.y) + abs(p.d.z) + (p.ha[0] + p.ha[1] + p.ha[2]) +
+         (p.hb[0] + p.hb[1] + p.hb[2]);
+}
+
+// Edge axis a_i x b_j in A's frame: its gap times its length, and its squared length.
+template <class L>
+struct FastEdge {
+  L gap;
+  L length2;
+};
+
+template <class L>
+CARDEMO_BATCH_INLINE FastEdge<L> fastEdge(const Pair3Lanes<L>& p, int i, int j) {
+  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+  // e_i x r_j = r_{i1 j} e_{i2} - r_{i2 j} e_{i1}; its dot products with A's other axes are R
+  // entries of row i2 and i1, with B's other axes entries of row i (B's columns j x j1 = j2).
+  const L along = p.t[i2] * p.R[i1][j] - p.t[i1] * p.R[i2][j];
+  const L ra = p.ha[i1] * p.absR[i2][j] + p.ha[i2] * p.absR[i1][j];
+  const L rb = p.hb[j1] * p.absR[i][j2] + p.hb[j2] * p.absR[i][j1];
+  return {abs(along) - ra - rb, p.R[i1][j] * p.R[i1][j] + p.R[i2][j] * p.R[i2][j]};
+}
+
+// The lanes where the accurate kernel skips edge axis (i, j): its cross product is exactly zero
+// (exactly parallel edges; cars on flat ground share their vertical axis). Same operations as
+// edgeGap, so the same decision.
+template <class L>
+CARDEMO_BATCH_INLINE typename L::Mask skippedEdge(const Pair3Lanes<L>& p, int i, int j) {
+  const V3<L> n = accurateCross(p.a[i], p.b[j]);
+  return lt(dot(n, n), L::splat(kSkippedBelow));
+}
+
+// Marks as sure the lanes of every edge axis that the accurate kernel skips, for the axes where
+// some lane is not sure yet (ignoring lanes in `done`); returns the lanes sure on all nine.
+template <class L>
+CARDEMO_BATCH_INLINE typename L::Mask certifySkipped(const Pair3Lanes<L>& p,
+                                                     typename L::Mask (&sure)[9],
+                                                     typename L::Mask done) {
+  typename L::Mask all = sure[0];
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value;
+    if (!allOf(sure[e] | done)) sure[e] = sure[e] | skippedEdge(p, e / 3, e % 3);
+    all = e == 0 ? sure[0] : all & sure[e];
+  });
+  return all;
+}
+
+// mask ? x : y, lane by lane, for masks.
+template <class L>
+CARDEMO_BATCH_INLINE typename L::Mask selectMask(typename L::Mask m, typename L::Mask x,
+                                                 typename L::Mask y) {
+  const L one = L::splat(1.0), zero = L::splat(0.0);
+  return gt(select(m, select(x, one, zero), select(y, one, zero)), L::splat(0.5));
+}
+
+template <class L>
+CARDEMO_BATCH_INLINE typename L::Mask separated3Filtered(const Box3One& a, const Box3Arrays& b,
+                                                         std::size_t i) {
+  const Pair3Lanes<L> p = pair3<L>(a, b, i);
+  const L zero = L::splat(0.0);
+  typename L::Mask separated = gt(p.face[0], zero);
+  staticFor<5>([&](auto k) { separated = separated | gt(p.face[decltype(k)::value + 1], zero); });
+  const L bound = L::splat(a.edge_gap_error) * scale3(p);
+  // An edge gap beyond the bound has the accurate gap's sign: above it, certainly separated;
+  // below minus it, certainly not separated on that axis.
+  typename L::Mask sure[9];
+  typename L::Mask all_sure;
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value;
+    const L gap = fastEdge(p, e / 3, e % 3).gap;
+    separated = separated | gt(gap, bound);
+    sure[e] = gt(abs(gap), bound);
+    all_sure = e == 0 ? sure[0] : all_sure & sure[e];
+  });
+  if (allOf(separated | all_sure)) return separated;
+  all_sure = certifySkipped(p, sure, separated);
+  const typename L::Mask decided = separated | all_sure;
+  if (allOf(decided)) return separated;
+  return selectMask<L>(decided, separated, separated3<L>(a, b, i));
+}
+
+// A candidate separation gap / sqrt(length2), carried as gap, length2 and gap |gap|.
+template <class L>
+struct Candidate {
+  L gap, length2, square;
+};
+
+// The larger of two candidates, compared without a root: z -> z|z| is increasing, so
+// x.gap / sqrt(x.length2) > y.gap / sqrt(y.length2) iff x.square y.length2 > y.square x.length2.
+template <class L>
+CARDEMO_BATCH_INLINE Candidate<L> larger(const Candidate<L>& x, const Candidate<L>& y) {
+  const typename L::Mask wins = gt(x.square * y.length2, y.square * x.length2);
+  return {select(wins, x.gap, y.gap), select(wins, x.length2, y.length2),
+          select(wins, x.square, y.square)};
+}
+
+template <class L>
+CARDEMO_BATCH_INLINE L separation3Filtered(const Box3One& a, const Box3Arrays& b, std::size_t i) {
+  const Pair3Lanes<L> p = pair3<L>(a, b, i);
+  // The largest of the face gaps and of gap / sqrt(length2) over the edges that are well enough
+  // conditioned (length2 above the floor, where the normalised error is within
+  // kSeparationTolerance times the scale); the others enter as -infinity and never win. Reduced
+  // as a tournament, so the dependency chain is four comparisons deep rather than fifteen; one
+  // root and one division at the end.
+  const L one = L::splat(1.0), never = L::splat(-__builtin_inf());
+  const L face01 = select(gt(p.face[1], p.face[0]), p.face[1], p.face[0]);
+  const L face23 = select(gt(p.face[3], p.face[2]), p.face[3], p.face[2]);
+  const L face45 = select(gt(p.face[5], p.face[4]), p.face[5], p.face[4]);
+  const L face03 = select(gt(face23, face01), face23, face01);
+  const L face = select(gt(face45, face03), face45, face03);
+  const L floor = L::splat(a.min_edge_length2);
+  Candidate<L> c[10];
+  c[0] = {face, one, face * abs(face)};
+  typename L::Mask sure[9];
+  typename L::Mask all_sure;
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value;
+    const FastEdge<L> f = fastEdge(p, e / 3, e % 3);
+    sure[e] = gt(f.length2, floor);
+    c[e + 1] = {f.gap, select(sure[e], f.length2, one), select(sure[e], f.gap * abs(f.gap), never)};
+    all_sure = e == 0 ? sure[0] : all_sure & sure[e];
+  });
+  // In place: round k reads c[2k], c[2k + 1], which no earlier round has written.
+  staticFor<5>([&c](auto kc) {
+    constexpr int k = decltype(kc)::value;
+    c[k] = larger(c[2 * k], c[2 * k + 1]);
+  });
+  const Candidate<L> best = larger(larger(c[0], c[1]), larger(c[2], c[3]));
+  const Candidate<L> winner = larger(best, c[4]);
+  const L value = winner.gap / sqrt(winner.length2);
+  // Near zero the sign (the verdict) must be the accurate kernel's: leave those lanes to it.
+  const typename L::Mask clear = gt(abs(value), L::splat(2.0 * kSeparationTolerance) * scale3(p));
+  if (allOf(all_sure & clear)) return value;
+  all_sure = certifySkipped(p, sure, lt(one, L::splat(0.0)));
+  const typename L::Mask decided = all_sure & clear;
+  if (allOf(decided)) return value;
+  return select(decided, value, separation3<L>(a, b, i));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -319,28 +505,32 @@ void runCollide2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::
 }
 
 template <class L>
-void runOverlap3(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
-                 std::uint8_t* hit) {
+[[gnu::flatten]] void runOverlap3(const Box3One& a, const Box3Arrays& b, std::size_t first,
+                                  std::size_t last, std::uint8_t* hit) {
   std::size_t i = first;
-  for (; i + L::kWidth <= last; i += L::kWidth) storeHits(hit + i, separated3<L>(a, b, i));
+  for (; i + L::kWidth <= last; i += L::kWidth) {
+    storeHits(hit + i, separated3Filtered<L>(a, b, i));
+  }
   if (i == last) return;
   PaddedTail<L, Box3Arrays, 15> t;
   fillTail<L>(b, i, last, t);
   std::uint8_t h[L::kWidth];
-  storeHits(h, separated3<L>(a, t.arrays, 0));
+  storeHits(h, separated3Filtered<L>(a, t.arrays, 0));
   for (std::size_t k = 0; i + k < last; ++k) hit[i + k] = h[k];
 }
 
 template <class L>
-void runSeparation3(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
-                    double* separation) {
+[[gnu::flatten]] void runSeparation3(const Box3One& a, const Box3Arrays& b, std::size_t first,
+                                     std::size_t last, double* separation) {
   std::size_t i = first;
-  for (; i + L::kWidth <= last; i += L::kWidth) store(separation + i, separation3<L>(a, b, i));
+  for (; i + L::kWidth <= last; i += L::kWidth) {
+    store(separation + i, separation3Filtered<L>(a, b, i));
+  }
   if (i == last) return;
   PaddedTail<L, Box3Arrays, 15> t;
   fillTail<L>(b, i, last, t);
   double sep[L::kWidth];
-  store(sep, separation3<L>(a, t.arrays, 0));
+  store(sep, separation3Filtered<L>(a, t.arrays, 0));
   for (std::size_t k = 0; i + k < last; ++k) separation[i + k] = sep[k];
 }
 

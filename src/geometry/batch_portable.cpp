@@ -65,6 +65,9 @@ struct Lane1 {
 [[gnu::always_inline]] inline void storeHits(std::uint8_t* p, Mask1 separated) {
   *p = separated.m ? 0 : 1;
 }
+[[gnu::always_inline]] inline bool allOf(Mask1 m) {
+  return m.m;
+}
 
 }  // namespace
 

@@ -1,12 +1,8 @@
 #include "geometry/convex_polygon.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
-#include <limits>
 #include <utility>
-
-#include "geometry/finite.hpp"
 
 namespace cardemo {
 namespace {
@@ -21,138 +17,6 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 void explain(std::string* why, std::string text) {
   if (why != nullptr) *why = std::move(text);
-}
-
-// Vertices in a frame centred on a reference point, plus the unnormalised SAT axes of the shape.
-struct LocalShape {
-  std::array<Eigen::Vector2d, ConvexPolygon::kMaxVertices> points;
-  std::array<Eigen::Vector2d, ConvexPolygon::kMaxVertices> axes;
-  int point_count = 0;
-  int axis_count = 0;
-};
-
-LocalShape localPolygon(const ConvexPolygon& p, const Eigen::Vector2d& ref) {
-  LocalShape s;
-  s.point_count = p.count;
-  s.axis_count = p.count;
-  for (int i = 0; i < p.count; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    s.points[k] = p.vertex(i) - ref;
-    // Edge from the world coordinates: far from the origin this difference is exact (Sterbenz).
-    const Eigen::Vector2d e = p.vertex((i + 1) % p.count) - p.vertex(i);
-    s.axes[k] = {e.y(), -e.x()};  // outward for a CCW polygon
-  }
-  return s;
-}
-
-LocalShape localBox(const Obb2& b, const Eigen::Vector2d& ref) {
-  LocalShape s;
-  const Eigen::Vector2d c = b.center - ref;  // subtract in double first (STYLE 8)
-  const Eigen::Vector2d ex = b.axis * b.half.x();
-  const Eigen::Vector2d ey = b.perp() * b.half.y();
-  s.points[0] = c + ex - ey;
-  s.points[1] = c + ex + ey;
-  s.points[2] = c - ex + ey;
-  s.points[3] = c - ex - ey;
-  s.point_count = 4;
-  // A box's opposite faces share an axis, so two axes cover its four edge normals.
-  s.axes[0] = b.axis;
-  s.axes[1] = b.perp();
-  s.axis_count = 2;
-  return s;
-}
-
-struct Interval {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-};
-
-Interval project(const LocalShape& s, const Eigen::Vector2d& axis) {
-  Interval r;
-  for (int i = 0; i < s.point_count; ++i) {
-    const double d = s.points[static_cast<std::size_t>(i)].dot(axis);
-    r.lo = std::min(r.lo, d);
-    r.hi = std::max(r.hi, d);
-  }
-  return r;
-}
-
-// Tests the axes of `owner` against both shapes, keeping the largest normalised gap in `best`;
-// `finite` turns false when a gap overflowed or an axis length underflowed to zero.
-void testAxes(const LocalShape& owner, const LocalShape& a, const LocalShape& b, SatResult2& best,
-              bool& first, bool& finite) {
-  for (int i = 0; i < owner.axis_count; ++i) {
-    const Eigen::Vector2d& n = owner.axes[static_cast<std::size_t>(i)];
-    const Interval pa = project(a, n);
-    const Interval pb = project(b, n);
-    // The gap between the two intervals on this line, whichever side B lies on.
-    const double forward = pb.lo - pa.hi;
-    const double backward = pa.lo - pb.hi;
-    const double length = n.norm();
-    const double gap = std::max(forward, backward) / length;
-    finite = finite && std::isfinite(gap);
-    if (first || gap > best.separation) {
-      first = false;
-      best.separation = gap;
-      best.normal = (forward >= backward ? n : Eigen::Vector2d(-n)) / length;
-    }
-  }
-}
-
-SatResult2 collideScaled(const LocalShape& a, const LocalShape& b, bool& finite) {
-  SatResult2 best;
-  bool first = true;
-  testAxes(a, a, b, best, first, finite);
-  testAxes(b, a, b, best, first, finite);
-  best.hit = best.separation <= 0.0;
-  return best;
-}
-
-// The shape scaled by 2^-k (exact, bar underflow below the largest coordinate's 2^-1022), with
-// every axis scaled to unit order on its own (a gap divided by its axis length does not depend on
-// that length) and zero axes dropped (a zero edge has no normal; fewer axes can only report
-// overlap, never a false gap).
-LocalShape scaledDown(const LocalShape& s, int k) {
-  LocalShape out;
-  out.point_count = s.point_count;
-  for (int i = 0; i < s.point_count; ++i) {
-    const auto j = static_cast<std::size_t>(i);
-    out.points[j] = {std::scalbn(s.points[j].x(), -k), std::scalbn(s.points[j].y(), -k)};
-  }
-  for (int i = 0; i < s.axis_count; ++i) {
-    const Eigen::Vector2d& n = s.axes[static_cast<std::size_t>(i)];
-    const double m = n.cwiseAbs().maxCoeff();
-    if (!(m > 0.0)) continue;
-    const int e = std::ilogb(m);
-    out.axes[static_cast<std::size_t>(out.axis_count++)] = {std::scalbn(n.x(), -e),
-                                                            std::scalbn(n.y(), -e)};
-  }
-  return out;
-}
-
-double largestCoordinate(const LocalShape& s) {
-  double m = 0.0;
-  for (int i = 0; i < s.point_count; ++i) {
-    m = std::max(m, s.points[static_cast<std::size_t>(i)].cwiseAbs().maxCoeff());
-  }
-  return m;
-}
-
-SatResult2 collideLocal(const LocalShape& a, const LocalShape& b) {
-  bool finite = true;
-  SatResult2 r = collideScaled(a, b, finite);
-  if (!finite) {
-    // Coordinates beyond ~1e154 square past DBL_MAX in the projections, and edges shorter than
-    // ~1e-154 have a zero squared length: the same SAT on the shapes brought to unit order by a
-    // power of two, then the separation scaled back (exact in both directions).
-    const double largest = std::max(largestCoordinate(a), largestCoordinate(b));
-    const int k = largest > 0.0 ? std::ilogb(largest) : 0;
-    finite = true;
-    r = collideScaled(scaledDown(a, k), scaledDown(b, k), finite);
-    r.separation = std::scalbn(r.separation, k);
-  }
-  assert(isFinite(r));
-  return r;
 }
 
 }  // namespace
@@ -258,24 +122,6 @@ Eigen::Vector2d ConvexPolygon::centroid() const {
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   for (int i = 1; i < count; ++i) sum += vertex(i) - vertex(0);
   return vertex(0) + sum / static_cast<double>(count);
-}
-
-SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
-  assert(inDomain(a) && inDomain(b));
-  const Eigen::Vector2d& ref = a.vertex(0);
-  return collideLocal(localPolygon(a, ref), localPolygon(b, ref));
-}
-
-SatResult2 collidePolygonObb(const ConvexPolygon& a, const Obb2& b) {
-  assert(inDomain(a) && inDomain(b));
-  const Eigen::Vector2d& ref = a.vertex(0);
-  return collideLocal(localPolygon(a, ref), localBox(b, ref));
-}
-
-SatResult2 collideObbPolygon(const Obb2& a, const ConvexPolygon& b) {
-  assert(inDomain(a) && inDomain(b));
-  const Eigen::Vector2d& ref = a.center;
-  return collideLocal(localBox(a, ref), localPolygon(b, ref));
 }
 
 }  // namespace cardemo

@@ -37,7 +37,8 @@ struct ConvexPolygon {
   [[nodiscard]] Eigen::Vector2d centroid() const;
 };
 
-/// SAT over the edge normals of both polygons: separation and unit normal from A towards B.
+/// SAT over the edge normals of both polygons: separation and unit normal from A towards B
+/// (src/geometry/sat_polygon.cpp).
 /// Accurate far from the origin (coordinates are taken relative to A's first vertex first).
 [[nodiscard]] SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b);
 

@@ -1,6 +1,5 @@
 #include "geometry/manifold2.hpp"
 
-#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -8,53 +7,60 @@
 
 // Reference face / incident edge / clipping after Erin Catto, "Contact Manifolds" (GDC 2007) and
 // Box2D's b2CollidePolygons (v2.x); clipping is Sutherland-Hodgman against the reference face's
-// side planes (Ericson, Real-Time Collision Detection, 8.3.4). Own implementation.
+// side planes (Ericson, Real-Time Collision Detection, 8.3.4). Own implementation, specialised to
+// two boxes: one relative pose, the eight face separations in closed form, and every face normal
+// an axis of its box's frame, so each dot product with it is one signed coordinate.
 
 namespace cardemo {
 namespace {
 
-// Outward normal of face k of a box in its own frame: k*90 degrees from local +x.
-constexpr double kFaceX[4] = {1.0, 0.0, -1.0, 0.0};
-constexpr double kFaceY[4] = {0.0, 1.0, 0.0, -1.0};
+// Face k of a box (k*90 degrees from the local +x) has the outward normal sign(k) * e_axis(k).
+constexpr int axisOf(int k) {
+  return k & 1;
+}
+constexpr double signOf(int k) {
+  return k < 2 ? 1.0 : -1.0;
+}
 
-// `other` seen from `self`'s frame: centre offset and the other's axes, all in self's local axes.
-struct LocalPair {
-  Eigen::Vector2d t;  // other's centre minus self's centre, in self's frame
-  Eigen::Vector2d u;  // other's local +x in self's frame
-  Eigen::Vector2d v;  // other's local +y in self's frame
+// The pair seen from A's frame and from B's: each centre offset and the relative rotation.
+struct PairPose {
+  double ta[2];  // B's centre minus A's centre, in A's frame
+  double tb[2];  // A's centre minus B's centre, in B's frame
+  double c, s;   // B's axis in A's frame is (c, s); B's perp is (-s, c)
 };
 
-LocalPair localPair(const Obb2& self, const Obb2& other) {
+PairPose pairPose(const Obb2& a, const Obb2& b) {
   // Subtract in double first so that the pair is accurate far from the origin (STYLE 8).
-  const Eigen::Vector2d d = other.center - self.center;
-  const Eigen::Vector2d& a = self.axis;
-  const auto toLocal = [&](const Eigen::Vector2d& w) -> Eigen::Vector2d {
-    return {a.x() * w.x() + a.y() * w.y(), a.x() * w.y() - a.y() * w.x()};
-  };
-  return {toLocal(d), toLocal(other.axis), toLocal(other.perp())};
+  const double dx = b.center.x() - a.center.x(), dy = b.center.y() - a.center.y();
+  const double ax = a.axis.x(), ay = a.axis.y(), bx = b.axis.x(), by = b.axis.y();
+  PairPose p;
+  p.ta[0] = ax * dx + ay * dy;
+  p.ta[1] = ax * dy - ay * dx;
+  // A's centre minus B's is exactly -d, so its B-frame coordinates are exactly minus B^T d.
+  p.tb[0] = -(bx * dx + by * dy);
+  p.tb[1] = -(bx * dy - by * dx);
+  p.c = ax * bx + ay * by;
+  p.s = ax * by - ay * bx;
+  return p;
 }
 
-Eigen::Vector2d faceNormal(int k) {
-  return {kFaceX[k], kFaceY[k]};
+// The separations of the eight faces: 0-3 of A, 4-7 of B. Face k of `self` separates `other` by
+// the signed distance of other's nearest point to the face's line (Box2D b2FindMaxSeparation,
+// specialised to boxes): sign(k) t[axis(k)] - self's half extent - other's radius on that axis.
+// A's axes in B's frame are (c, -s) and (s, c), so both boxes' radii use the same |c| and |s|.
+void faceSeparations(const Obb2& a, const Obb2& b, const PairPose& p, double seps[8]) {
+  const double ac = std::abs(p.c), as = std::abs(p.s);
+  const double rb0 = b.half.x() * ac + b.half.y() * as, rb1 = b.half.x() * as + b.half.y() * ac;
+  const double ra0 = a.half.x() * ac + a.half.y() * as, ra1 = a.half.x() * as + a.half.y() * ac;
+  seps[0] = p.ta[0] - a.half.x() - rb0;
+  seps[1] = p.ta[1] - a.half.y() - rb1;
+  seps[2] = -p.ta[0] - a.half.x() - rb0;
+  seps[3] = -p.ta[1] - a.half.y() - rb1;
+  seps[4] = p.tb[0] - b.half.x() - ra0;
+  seps[5] = p.tb[1] - b.half.y() - ra1;
+  seps[6] = -p.tb[0] - b.half.x() - ra0;
+  seps[7] = -p.tb[1] - b.half.y() - ra1;
 }
-
-double faceOffset(const Obb2& box, int k) {
-  return k % 2 == 0 ? box.half.x() : box.half.y();
-}
-
-// Separation of `other` from face k of `self`: the least signed distance of other's points to the
-// face's plane (Box2D b2FindMaxSeparation, specialised to boxes).
-double faceSeparation(const Obb2& self, const Obb2& other, const LocalPair& p, int k) {
-  const Eigen::Vector2d n = faceNormal(k);
-  const double radius =
-      other.half.x() * std::abs(n.dot(p.u)) + other.half.y() * std::abs(n.dot(p.v));
-  return n.dot(p.t) - faceOffset(self, k) - radius;
-}
-
-struct Candidate {
-  int face = -1;  // 0-3 of A, 4-7 of B
-  double separation = 0.0;
-};
 
 double margin(const ManifoldSettings& s, double separation) {
   // For penetration (< 0) this is Box2D 2.1's k_relativeTol * sepA + k_absoluteTol rearranged;
@@ -62,41 +68,39 @@ double margin(const ManifoldSettings& s, double separation) {
   return (1.0 - s.relative_tolerance) * std::abs(separation) + s.absolute_tolerance;
 }
 
-Candidate chooseReference(const std::array<double, 8>& seps, const ManifoldSettings& settings,
-                          int previous) {
-  Candidate best_a{0, seps[0]}, best_b{4, seps[4]};
+// The reference face: A's best face unless B's is clearly better, or the previous face while it
+// stays within the margin of the best, so that nearly equal faces do not flip-flop.
+int chooseReference(const double seps[8], const ManifoldSettings& settings, int previous) {
+  int best_a = 0, best_b = 4;
   for (int k = 1; k < 4; ++k) {
-    if (seps[static_cast<std::size_t>(k)] > best_a.separation)
-      best_a = {k, seps[static_cast<std::size_t>(k)]};
-    if (seps[static_cast<std::size_t>(k) + 4] > best_b.separation) {
-      best_b = {k + 4, seps[static_cast<std::size_t>(k) + 4]};
-    }
+    if (seps[k] > seps[best_a]) best_a = k;
+    if (seps[k + 4] > seps[best_b]) best_b = k + 4;
   }
-  const Candidate& best = best_b.separation > best_a.separation ? best_b : best_a;
-  if (previous >= 0 && previous < 8) {
-    const double s = seps[static_cast<std::size_t>(previous)];
-    if (s >= best.separation - margin(settings, best.separation)) return {previous, s};
+  const double best = seps[best_b] > seps[best_a] ? seps[best_b] : seps[best_a];
+  if (previous >= 0 && previous < 8 && seps[previous] >= best - margin(settings, best)) {
+    return previous;
   }
-  // A's face is the default; B's must win clearly, so that nearly equal faces do not flip-flop.
-  if (best_b.separation > best_a.separation + margin(settings, best_a.separation)) return best_b;
+  if (seps[best_b] > seps[best_a] + margin(settings, seps[best_a])) return best_b;
   return best_a;
 }
 
 struct ClipVertex {
-  Eigen::Vector2d p;
-  int id = 0;
+  double p[2];  // in the reference box's frame
+  int id;       // incident corner 0-3, or 4/5 for a point cut by a side plane
 };
 
-// Sutherland-Hodgman for a segment against the half-plane n.x <= offset; false when nothing is
-// left.
-bool clipSegment(std::array<ClipVertex, 2>& seg, const Eigen::Vector2d& n, double offset,
-                 int clip_id) {
-  const double d0 = n.dot(seg[0].p) - offset;
-  const double d1 = n.dot(seg[1].p) - offset;
+// Sutherland-Hodgman for the segment against the half-plane sign * p[axis] <= offset; false when
+// nothing is left.
+bool clipSegment(ClipVertex seg[2], int axis, double sign, double offset, int clip_id) {
+  const double d0 = sign * seg[0].p[axis] - offset;
+  const double d1 = sign * seg[1].p[axis] - offset;
   if (d0 > 0.0 && d1 > 0.0) return false;
   if (d0 <= 0.0 && d1 <= 0.0) return true;
-  const Eigen::Vector2d x = seg[0].p + (d0 / (d0 - d1)) * (seg[1].p - seg[0].p);
-  seg[d0 > 0.0 ? 0 : 1] = {x, clip_id};
+  const double r = d0 / (d0 - d1);
+  const ClipVertex cut{{seg[0].p[0] + r * (seg[1].p[0] - seg[0].p[0]),
+                        seg[0].p[1] + r * (seg[1].p[1] - seg[0].p[1])},
+                       clip_id};
+  seg[d0 > 0.0 ? 0 : 1] = cut;
   return true;
 }
 
@@ -105,57 +109,66 @@ bool clipSegment(std::array<ClipVertex, 2>& seg, const Eigen::Vector2d& n, doubl
 Manifold2 manifoldObb2(const Obb2& a, const Obb2& b, const ManifoldSettings& settings,
                        int previous_reference_face) {
   assert(inDomain(a) && inDomain(b));
-  const LocalPair ab = localPair(a, b);
-  const LocalPair ba = localPair(b, a);
-  std::array<double, 8> seps{};
-  for (int k = 0; k < 4; ++k) {
-    seps[static_cast<std::size_t>(k)] = faceSeparation(a, b, ab, k);
-    seps[static_cast<std::size_t>(k) + 4] = faceSeparation(b, a, ba, k);
-  }
+  const PairPose pose = pairPose(a, b);
+  double seps[8];
+  faceSeparations(a, b, pose, seps);
+  double sat = seps[0];
+  for (int k = 1; k < 8; ++k) sat = seps[k] > sat ? seps[k] : sat;
   Manifold2 m;
-  const double sat = *std::max_element(seps.begin(), seps.end());
   if (sat > settings.max_separation) return m;
 
-  const Candidate ref = chooseReference(seps, settings, previous_reference_face);
-  const bool flip = ref.face >= 4;
+  const int face = chooseReference(seps, settings, previous_reference_face);
+  const bool flip = face >= 4;
   const Obb2& rbox = flip ? b : a;
   const Obb2& ibox = flip ? a : b;
-  const LocalPair& p = flip ? ba : ab;
-  const int k = ref.face % 4;
-  const Eigen::Vector2d n = faceNormal(k);
+  // The incident box in the reference box's frame: centre t, axes u and v.
+  const double* t = flip ? pose.tb : pose.ta;
+  const double s = flip ? -pose.s : pose.s;
+  const double u[2] = {pose.c, s}, v[2] = {-s, pose.c};
+  const int k = face & 3;
+  const int axis = axisOf(k), other_axis = 1 - axis;
+  const double sign = signOf(k);
 
-  // Incident face: the incident box's face whose normal is most anti-parallel to n.
-  const Eigen::Vector2d inc_normals[4] = {p.u, p.v, -p.u, -p.v};
+  // Incident face: the incident box's face whose normal (u, v, -u, -v) is most anti-parallel to
+  // the reference normal; its dot product with that normal is sign times one coordinate.
+  const double dots[4] = {sign * u[axis], sign * v[axis], -(sign * u[axis]), -(sign * v[axis])};
   int j = 0;
-  for (int i = 1; i < 4; ++i) {
-    if (inc_normals[i].dot(n) < inc_normals[j].dot(n)) j = i;
+  for (int i = 1; i < 4; ++i) j = dots[i] < dots[j] ? i : j;
+  // Its two corners in Obb2::corners() order (face j joins corners j and j+1): corner i is
+  // t + sx ex + sy ey with (sx, sy) = (+,-), (+,+), (-,+), (-,-).
+  const double ex[2] = {u[0] * ibox.half.x(), u[1] * ibox.half.x()};
+  const double ey[2] = {v[0] * ibox.half.y(), v[1] * ibox.half.y()};
+  ClipVertex seg[2];
+  for (int e = 0; e < 2; ++e) {
+    const int corner = (j + e) & 3;
+    const double sx = corner < 2 ? 1.0 : -1.0, sy = corner == 0 || corner == 3 ? -1.0 : 1.0;
+    seg[e] = {{t[0] + sx * ex[0] + sy * ey[0], t[1] + sx * ex[1] + sy * ey[1]}, corner};
   }
-  // Incident corners in the reference frame, in Obb2::corners() order (face j joins j and j+1).
-  const Eigen::Vector2d ex = p.u * ibox.half.x(), ey = p.v * ibox.half.y();
-  const Eigen::Vector2d corners[4] = {p.t + ex - ey, p.t + ex + ey, p.t - ex + ey, p.t - ex - ey};
-  std::array<ClipVertex, 2> seg{{{corners[j], j}, {corners[(j + 1) % 4], (j + 1) % 4}}};
 
-  // Side planes: the reference face runs along the tangent between the box's extents.
-  const Eigen::Vector2d tangent{-n.y(), n.x()};
-  const double side = faceOffset(rbox, (k + 1) % 4);
-  if (!clipSegment(seg, -tangent, side, 4) || !clipSegment(seg, tangent, side, 5)) return m;
+  // Side planes: the reference face runs along its tangent (-n.y, n.x) between the reference
+  // box's extents on that axis.
+  const double tangent_sign = axis == 0 ? sign : -sign;
+  const double side = other_axis == 0 ? rbox.half.x() : rbox.half.y();
+  if (!clipSegment(seg, other_axis, -tangent_sign, side, 4) ||
+      !clipSegment(seg, other_axis, tangent_sign, side, 5)) {
+    return m;
+  }
 
-  const double offset = faceOffset(rbox, k);
+  const double offset = axis == 0 ? rbox.half.x() : rbox.half.y();
   const Eigen::Vector2d& ru = rbox.axis;
   const Eigen::Vector2d rv = rbox.perp();
-  const auto toWorld = [&](const Eigen::Vector2d& q) -> Eigen::Vector2d {
-    return rbox.center + ru * q.x() + rv * q.y();
-  };
-  const Eigen::Vector2d n_world = ru * n.x() + rv * n.y();
+  const Eigen::Vector2d n_world = sign * (axis == 0 ? ru : rv);
   m.normal = flip ? Eigen::Vector2d(-n_world) : n_world;
-  m.reference_face = ref.face;
+  m.reference_face = face;
   for (const ClipVertex& cv : seg) {
-    const double s = n.dot(cv.p) - offset;
-    if (s > settings.max_separation) continue;
+    const double sep = sign * cv.p[axis] - offset;
+    if (sep > settings.max_separation) continue;
     // Points lie on B's surface: on the incident edge when B is incident, else projected onto B's
     // reference face.
-    const Eigen::Vector2d on_b = flip ? Eigen::Vector2d(cv.p - s * n) : cv.p;
-    m.points[static_cast<std::size_t>(m.count)] = {toWorld(on_b), s, 8 * ref.face + cv.id};
+    double q[2] = {cv.p[0], cv.p[1]};
+    if (flip) q[axis] -= sep * sign;
+    m.points[static_cast<std::size_t>(m.count)] = {rbox.center + ru * q[0] + rv * q[1], sep,
+                                                   8 * face + cv.id};
     ++m.count;
   }
   assert(m.normal.allFinite() && (m.count < 1 || m.points[0].point.allFinite()) &&

@@ -1,10 +1,34 @@
 #include "geometry/obb3_batch.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 #include "geometry/batch_path.hpp"
 
 namespace cardemo {
+namespace {
+
+// How far the columns m_k of a rotation are from an orthonormal right-handed frame: the largest
+// |m_k . m_l - delta_kl| and |(m_k1 x m_k2) - m_k| (each component, k1, k2 the next indices
+// cyclically), plus 4 ulps for the rounding of this very computation. The A-frame edge gaps of
+// the batch kernels are exact for exact rotations; their error grows with this defect
+// (docs/architecture.md, "Batch kernels"). About 2e-15 for rotations from fromQuaternion.
+double rotationDefect(const Eigen::Matrix3d& m) {
+  double defect = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    for (int l = k; l < 3; ++l) {
+      defect = std::max(defect, std::abs(m.col(k).dot(m.col(l)) - (k == l ? 1.0 : 0.0)));
+    }
+    const Eigen::Vector3d c = m.col((k + 1) % 3).cross(m.col((k + 2) % 3)) - m.col(k);
+    defect = std::max(defect, c.cwiseAbs().maxCoeff());
+  }
+  // NaN compares false everywhere: report it as infinite.
+  return defect >= 0.0 ? defect + 0x1p-51 : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
 
 Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
   for (auto* group : {&center_, &half_}) {
@@ -12,6 +36,7 @@ Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
   }
   for (std::vector<double>& v : rotation_) v.reserve(boxes.size());
   for (const Obb3& b : boxes) {
+    frame_defect_ = std::max(frame_defect_, rotationDefect(b.rotation));
     for (int k = 0; k < 3; ++k) {
       center_[static_cast<std::size_t>(k)].push_back(b.center[k]);
       half_[static_cast<std::size_t>(k)].push_back(b.half[k]);
@@ -56,6 +81,25 @@ batch_detail::Box3Arrays Obb3Batch::arrays() const {
 
 namespace {
 
+// Coefficients of the kernels' A-frame filter for this A against `many` (batch_kernels.hpp). With
+// U = 2^-53 and phi the larger frame defect, an A-frame edge gap (gap times axis length) is within
+// (16U + 2 phi) of the pair's scale S of the gap on the exact cross product of the stored columns,
+// and the accurate kernel within 10U S of that: 32U + 6 phi covers both with room to spare
+// (measured: under 16U S for phi up to 20U). A normalised gap is within (22U + 3 phi) S / |axis|;
+// (64U + 8 phi) / |axis| <= 2^-40 sets the floor on the squared axis length.
+void setFilter(const Obb3& a, const Obb3Batch& many, batch_detail::Box3One& one) {
+  constexpr double kU = 0x1p-53;
+  const double phi = std::max(rotationDefect(a.rotation), many.frameDefect());
+  if (!(phi <= 0x1p-30)) {
+    one.edge_gap_error = std::numeric_limits<double>::infinity();
+    one.min_edge_length2 = std::numeric_limits<double>::infinity();
+    return;
+  }
+  one.edge_gap_error = 32.0 * kU + 6.0 * phi;
+  const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
+  one.min_edge_length2 = root * root;
+}
+
 batch_detail::Box3One unpack(const Obb3& a) {
   batch_detail::Box3One one{};
   one.cx = a.center.x();
@@ -74,7 +118,8 @@ batch_detail::Box3One unpack(const Obb3& a) {
 
 void overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std::uint8_t> hit) {
   assert(hit.size() == many.size());
-  const batch_detail::Box3One one = unpack(a);
+  batch_detail::Box3One one = unpack(a);
+  setFilter(a, many, one);
 #if defined(CARDEMO_BATCH_AVX2)
   // The AVX-512 path is 2D only; its 3D kernels are the AVX2 ones.
   if (batchPath() != BatchPath::kPortable) {
@@ -87,7 +132,8 @@ void overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std::uint8
 
 void separationObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<double> separation) {
   assert(separation.size() == many.size());
-  const batch_detail::Box3One one = unpack(a);
+  batch_detail::Box3One one = unpack(a);
+  setFilter(a, many, one);
 #if defined(CARDEMO_BATCH_AVX2)
   // The AVX-512 path is 2D only; its 3D kernels are the AVX2 ones.
   if (batchPath() != BatchPath::kPortable) {

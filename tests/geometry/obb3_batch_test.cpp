@@ -183,6 +183,71 @@ TEST(Obb3BatchRandom, ExactTouchingIsAHit) {
   }
 }
 
+// The kernels' fast filter works in A's frame and hands near-touching pairs and edges within about
+// 1.4 degrees of parallel to the accurate kernel. Angles around that threshold, and full batches of
+// randomly rotated boxes (every lane group taking the fast path), on every path: the verdict is
+// the exact one whenever |sep| > 1e-6 m, and sep is within 2^-39 of the pair's scale of the scalar.
+TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
+  PathGuard guard;
+  std::mt19937_64 rng(0xba7c000a);
+  const int n = test3::scaledCount(300);
+  int pairs = 0, hits = 0;
+  double worst_relative = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const bool angles = k % 2 == 0;
+    const Pair3 first = angles ? test3::nearParallelPair(rng, 1e-3, 0.2) : test3::gapPair(rng);
+    std::vector<Obb3> boxes{first.b};
+    const int count = 4 + static_cast<int>(rng() % 29);
+    while (static_cast<int>(boxes.size()) < count) {
+      Obb3 b = Obb3::fromQuaternion({0, 0, 0}, test3::randomRotation(rng), test3::randomSize(rng));
+      if (angles) {
+        // Another near-parallel pair's relative rotation, carried over to this A.
+        const Pair3 other = test3::nearParallelPair(rng, 1e-3, 0.2);
+        const Eigen::Matrix3d relative = other.a.rotation.transpose() * other.b.rotation;
+        b = Obb3::fromQuaternion({0, 0, 0}, Eigen::Quaterniond(first.a.rotation * relative),
+                                 2.0 * other.b.half);
+      }
+      const double reach = first.a.half.norm() + b.half.norm();
+      b.center = first.a.center + test3::randomUnit(rng) * test3::uniform(rng, 0.0, 1.5 * reach);
+      boxes.push_back(b);
+    }
+    const Obb3Batch many(boxes);
+    std::vector<std::vector<double>> seps;
+    std::vector<std::vector<std::uint8_t>> hit_sets;
+    for (const BatchPath path : availablePaths()) {
+      setBatchPath(path);
+      seps.emplace_back(boxes.size());
+      hit_sets.emplace_back(boxes.size(), 7);
+      separationObb3Batch(first.a, many, seps.back());
+      overlapObb3Batch(first.a, many, hit_sets.back());
+    }
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const double sep = seps[0][i];
+      for (std::size_t q = 1; q < seps.size(); ++q) {
+        ASSERT_TRUE(sameBits(seps[q][i], sep)) << "case " << k << " box " << i;
+        ASSERT_EQ(hit_sets[q][i], hit_sets[0][i]) << "case " << k << " box " << i;
+      }
+      ASSERT_EQ(hit_sets[0][i] == 1, sep <= 0.0) << "case " << k << " box " << i;
+      const Eigen::Vector3d d = boxes[i].center - first.a.center;
+      const double scale = d.cwiseAbs().sum() + first.a.half.sum() + boxes[i].half.sum();
+      const SatResult3 scalar = collideObb3(first.a, boxes[i]);
+      worst_relative = std::max(worst_relative, std::abs(sep - scalar.separation) / scale);
+      ASSERT_LE(std::abs(sep - scalar.separation), 0x1p-39 * scale) << "case " << k << " box " << i;
+      const exact::ExactResult ex = exact::collideObb3(first.a, boxes[i]);
+      ASSERT_LE(std::abs(sep - ex.separation), kSepTolerance) << "case " << k << " box " << i;
+      if (std::abs(ex.separation) > kHitTolerance) {
+        ASSERT_EQ(hit_sets[0][i] == 1, ex.hit) << "case " << k << " box " << i;
+      }
+      ++pairs;
+      hits += ex.hit ? 1 : 0;
+    }
+  }
+  std::printf("    [filter] %d pairs, %d exact hits, worst |sep - scalar| / scale %.3g\n", pairs,
+              hits, worst_relative);
+  EXPECT_GT(hits, 0);
+  EXPECT_LT(hits, pairs);
+}
+
 // Crossed beams near-parallel to 1e-15 rad far from the origin: only an edge axis separates them.
 TEST(Obb3Batch, CrossedBeamsSeparatedByAnEdgeAxisOnEveryPath) {
   PathGuard guard;
