@@ -30,8 +30,9 @@ Projection project(const std::array<Eigen::Vector2d, N>& points, int count,
 
 SweepResult2 sweepObbPolygon(const Obb2& a, const Eigen::Vector2d& displacement,
                              const ConvexPolygon& b) {
-  // Same local points, axes and operation order as collideObbPolygon, so that the gap at t = 0 is
-  // that function's separation exactly.
+  // The candidate axes of collideObbPolygon (A's two axes, B's unnormalised edge normals), with
+  // points taken relative to A's centre: the gap at t = 0 is that function's separation to within
+  // rounding (it measures two axes at a time from its own reference point).
   const Eigen::Vector2d ex = a.axis * a.half.x();
   const Eigen::Vector2d ey = a.perp() * a.half.y();
   const Eigen::Vector2d zero = Eigen::Vector2d::Zero();

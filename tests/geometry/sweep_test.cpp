@@ -164,9 +164,11 @@ TEST(Sweep, ThinKerbAtAnySpeedIsHit) {
 
 // Random cases against the static SAT sampled along the sweep: before the reported contact the
 // shapes are apart, at it they touch (within the tolerance), and a miss is apart everywhere.
+// `start_tolerance`: how far the sweep's gap at t = 0 may be from the static separation (0 where
+// both do the same operations in the same order).
 template <class Shape, class Sweep, class Static>
 void checkAgainstSampledStatic(const char* label, int count, std::uint64_t seed, Sweep sweep,
-                               Static collide) {
+                               Static collide, double start_tolerance) {
   Random rng(seed);
   Failures f;
   int hits = 0, starts = 0;
@@ -186,8 +188,10 @@ void checkAgainstSampledStatic(const char* label, int count, std::uint64_t seed,
     const testing::SweepCase c = testing::sweepCase(rng, target, reach);
     const SweepResult2 r = sweep(c.a, c.d, b);
     const SatResult2 s0 = collide(c.a, b);
-    f.check(r.start_separation == s0.separation, i, "start separation differs from the static SAT");
-    f.check(!s0.hit || (r.hit && r.toi == 0.0), i, "in contact at t = 0 but toi is not 0");
+    f.check(std::abs(r.start_separation - s0.separation) <= start_tolerance, i,
+            "start separation differs from the static SAT");
+    f.check(!s0.hit || s0.separation >= -start_tolerance || (r.hit && r.toi == 0.0), i,
+            "in contact at t = 0 but toi is not 0");
     f.check(std::abs(r.normal.norm() - 1.0) <= 1e-12, i, "normal not unit");
     if (r.hit) ++hits;
     if (r.hit && r.toi == 0.0) ++starts;
@@ -221,7 +225,7 @@ TEST(Sweep, RandomBoxesAgreeWithTheSampledStaticTest) {
   checkAgainstSampledStatic<Obb2>(
       "boxes", scaledCount(100000), 0x5eed0b,
       [](const Obb2& a, const Eigen::Vector2d& d, const Obb2& b) { return sweepObb2(a, d, b); },
-      [](const Obb2& a, const Obb2& b) { return collideObb2(a, b); });
+      [](const Obb2& a, const Obb2& b) { return collideObb2(a, b); }, 0.0);
 }
 
 TEST(Sweep, RandomPolygonsAgreeWithTheSampledStaticTest) {
@@ -230,7 +234,9 @@ TEST(Sweep, RandomPolygonsAgreeWithTheSampledStaticTest) {
       [](const Obb2& a, const Eigen::Vector2d& d, const ConvexPolygon& b) {
         return sweepObbPolygon(a, d, b);
       },
-      [](const Obb2& a, const ConvexPolygon& b) { return collideObbPolygon(a, b); });
+      // collideObbPolygon projects relative to its own reference point, two axes at a time, and
+      // normalises only the winning axis: the same gaps to within rounding, not bit for bit.
+      [](const Obb2& a, const ConvexPolygon& b) { return collideObbPolygon(a, b); }, 1e-12);
 }
 
 }  // namespace
