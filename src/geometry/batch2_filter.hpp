@@ -87,7 +87,7 @@ struct HitByteTable {
     }
   }
 };
-constexpr HitByteTable kHitBytes;
+inline constexpr HitByteTable kHitBytes;
 
 // Eight hit bytes, hit[k] = 1 - bit k of `separated`.
 [[gnu::always_inline]] inline std::uint64_t hitBytes(unsigned separated) {

@@ -166,7 +166,7 @@ CARDEMO_BATCH_INLINE V3<L> accurateCross(const V3<L>& u, const V3<L>& v) {
 // Below this squared length an edge axis is treated as exactly parallel and skipped: its
 // components are under 2^-480 (an angle under 1e-144 rad between the edges), where the face axes
 // decide the pair to far better than any tolerance, and squaring could underflow.
-constexpr double kMinAxisLength2 = 0x1p-960;
+inline constexpr double kMinAxisLength2 = 0x1p-960;
 
 // Edge-axis gap: separation along a_i x b_j, times |a_i x b_j| (unnormalised), its squared length,
 // and whether the axis is used.
@@ -194,7 +194,7 @@ CARDEMO_BATCH_INLINE Pair3Lanes<L> pair3(const Box3One& a, const Box3Arrays& b, 
   Pair3Lanes<L> p;
   p.d = {L::load(b.cx + i) - L::splat(a.cx), L::load(b.cy + i) - L::splat(a.cy),
          L::load(b.cz + i) - L::splat(a.cz)};
-  for (int j = 0; j < 3; ++j) {
+  for (std::size_t j = 0; j < 3; ++j) {
     p.a[j] = {L::splat(a.r[3 * j]), L::splat(a.r[3 * j + 1]), L::splat(a.r[3 * j + 2])};
     p.b[j] = {L::load(b.r[3 * j] + i), L::load(b.r[3 * j + 1] + i), L::load(b.r[3 * j + 2] + i)};
   }
@@ -278,10 +278,10 @@ CARDEMO_BATCH_INLINE L separation3(const Box3One& a, const Box3Arrays& b, std::s
 
 // The accurate kernel skips an edge axis whose squared length is at most kMinAxisLength2; this is
 // the next double up, so lt(length2, it) is exactly that skip.
-constexpr double kSkippedBelow = 0x1.0000000000001p-960;
+inline constexpr double kSkippedBelow = 0x1.0000000000001p-960;
 // Separations from the filter are within kSeparationTolerance times the pair's scale of the
 // accurate kernel's (Box3One::min_edge_length2 is set for it).
-constexpr double kSeparationTolerance = 0x1p-40;
+inline constexpr double kSeparationTolerance = 0x1p-40;
 
 // The pair's scale: |d|_1 plus every half extent; it bounds |d|, each projected radius and, so,
 // each gap on a unit axis.
