@@ -8,7 +8,8 @@
 Writes docs/perf/{narrow,batch,broad,step,load}.md, docs/perf/results.csv,
 docs/perf/machine.md and docs/perf/bench.json, and replaces the region between
 `<!-- bench:tables:begin -->` and `<!-- bench:tables:end -->` in docs/performance.md.
-Then runs every cardemo_tradeoff_* executable and scripts/plot_tradeoffs.py when present.
+Then runs every cardemo_tradeoff_* study into docs/perf/*.csv and draws its plot
+(`scripts/plot_tradeoffs.py BUILD --run`).
 Times are CPU time per item (the machine is shared; wall time is noisier), the median of the
 repetitions.
 """
@@ -336,15 +337,12 @@ def write_tables(r):
 
 
 def run_tradeoffs(build_dir):
-    exes = sorted((build_dir / "bench").glob("cardemo_tradeoff_*"))
-    for exe in exes:
-        if os.access(exe, os.X_OK) and exe.is_file():
-            run([str(exe)], cwd=ROOT)
+    """Runs every tradeoff study into docs/perf/*.csv and redraws docs/img/tradeoff-*.png."""
     plot = ROOT / "scripts" / "plot_tradeoffs.py"
-    if plot.exists():
-        run([sys.executable, str(plot)], cwd=ROOT)
-    elif exes:
-        print("scripts/plot_tradeoffs.py not present: tradeoff plots skipped")
+    if not plot.exists():
+        print("scripts/plot_tradeoffs.py not present: tradeoff studies skipped")
+        return
+    run([sys.executable, str(plot), str(build_dir), "--run"], cwd=ROOT)
 
 
 def main():

@@ -123,6 +123,11 @@ def check_table(study, path):
     return rows
 
 
+def mean(values):
+    """Arithmetic mean; 0 for an empty list."""
+    return sum(values) / len(values) if values else 0.0
+
+
 def pareto(points):
     """Indices of the non-dominated points among (cost, error) pairs, sorted by cost."""
     front = []
@@ -326,8 +331,11 @@ def plot_ccd(plt, rows, out, default):
         cases = sum(r["cases"] for r in cells)
         agg.append({"mode": mode, "hz": hz,
                     "miss_rate": sum(r["missed"] for r in cells) / cases if cases else 0.0,
-                    "toi_max": max((r["toi_err_max_s"] for r in cells
-                                    if r["toi_err_max_s"] is not None), default=0.0),
+                    # Mean over the speeds of each row's mean error (hits found only; misses are
+                    # the other panel). The max is no use here: below the fast-motion bound every
+                    # mode reports contact at the frame's end, so every mode's max is one step.
+                    "toi_mean": mean([r["toi_err_mean_s"] for r in cells
+                                      if r["toi_err_mean_s"] is not None]),
                     "cost": hz * sum(r["ns_per_step"] for r in cells) / len(cells),
                     "cases": cases})
     modes = []
@@ -340,7 +348,7 @@ def plot_ccd(plt, rows, out, default):
     summary = []
     for ax, key, ylabel, zero in [
             (axes[0], "miss_rate", "missed impacts / cases (all speeds)", zero_rate),
-            (axes[1], "toi_max", "max time-of-impact error, s (all speeds)", ZERO_FLOOR)]:
+            (axes[1], "toi_mean", "mean time-of-impact error, s (mean over speeds)", ZERO_FLOOR)]:
         points = [(a["cost"], max(a[key], zero)) for a in agg]
         front = draw_front(ax, points)
         for i, mode in enumerate(modes):
@@ -354,7 +362,11 @@ def plot_ccd(plt, rows, out, default):
         d = [j for j, a in enumerate(agg) if f"{a['mode']}@{a['hz']}" == default]
         if d:
             mark_default(ax, points[d[0]], f"default: {default.replace('@', ', ')} Hz")
-            summary.append((f"ccd {key}", d[0] in front))
+            # The step rate is the integrator study's choice; this study chooses the mode, so the
+            # default is judged against the other modes at its rate.
+            same_rate = [j for j, a in enumerate(agg) if a["hz"] == agg[d[0]]["hz"]]
+            front_at_rate = [same_rate[i] for i in pareto([points[j] for j in same_rate])]
+            summary.append((f"ccd {key}, modes at {agg[d[0]]['hz']} Hz", d[0] in front_at_rate))
         ax.set_xscale("log")
         ax.set_yscale("log")
         if key == "miss_rate":
