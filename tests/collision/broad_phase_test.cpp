@@ -12,32 +12,11 @@
 #include <utility>
 #include <vector>
 
+#include "../support/batch_paths.hpp"
 #include "geometry/batch_path.hpp"
 
 namespace cardemo {
 namespace {
-
-// Every path this build and CPU can run (the grid's scans follow geometry/batch_path): the
-// portable one always, the others where the CPU has them.
-std::vector<BatchPath> availablePaths() {
-  std::vector<BatchPath> paths{BatchPath::kPortable};
-  for (const BatchPath path : {BatchPath::kAvx2, BatchPath::kAvx512}) {
-    if (batchPathAvailable(path)) paths.push_back(path);
-  }
-  return paths;
-}
-
-// Restores the process-wide path when a test ends.
-class PathGuard {
- public:
-  PathGuard() : saved_(batchPath()) {}
-  ~PathGuard() { setBatchPath(saved_); }
-  PathGuard(const PathGuard&) = delete;
-  PathGuard& operator=(const PathGuard&) = delete;
-
- private:
-  BatchPath saved_;
-};
 
 Aabb2 box(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y1}};
@@ -109,8 +88,8 @@ void expectTwins(const std::vector<Aabb2>& scene, const std::vector<Aabb2>& quer
   const UniformGrid grid(scene);
   const BruteForceBroadPhase brute(scene);
   std::vector<std::uint32_t> got, want;
-  PathGuard guard;
-  for (const BatchPath path : availablePaths()) {
+  testing::BatchPathGuard guard;
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     for (std::size_t q = 0; q < queries.size(); ++q) {
       grid.query(queries[q], got);
@@ -242,8 +221,8 @@ TEST(BroadPhase, TouchingBoxesCountAndResultsAreSortedUnique) {
                                  box(20, 20, 21, 21), box(0, 0, 30, 30)};
   const UniformGrid grid(scene);
   std::vector<std::uint32_t> out;
-  PathGuard guard;
-  for (const BatchPath path : availablePaths()) {
+  testing::BatchPathGuard guard;
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     SCOPED_TRACE(batchPathName(path));
     grid.query(box(10, 10, 10, 10), out);  // a point on the corner of box 0
@@ -258,8 +237,8 @@ TEST(BroadPhase, TouchingBoxesCountAndResultsAreSortedUnique) {
 }
 
 TEST(BroadPhase, EmptyAndFarQueriesReturnNothing) {
-  PathGuard guard;
-  for (const BatchPath path : availablePaths()) {
+  testing::BatchPathGuard guard;
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     SCOPED_TRACE(batchPathName(path));
     const UniformGrid empty(std::span<const Aabb2>{});
@@ -304,9 +283,10 @@ TEST(BroadPhase, FarFromOriginMatchesBruteForce) {
 }
 
 TEST(BroadPhase, EveryAvailableScanPathIsTestedAndTheFallbackIsAmongThem) {
-  // The twins above run once per path of availablePaths(): check what that list holds, so a
-  // machine without AVX2 still runs (and reports) the portable scan, and one with it runs both.
-  const std::vector<BatchPath> paths = availablePaths();
+  // The twins above run once per path of testing::availableBatchPaths(): check what that list
+  // holds, so a machine without AVX2 still runs (and reports) the portable scan, and one with it
+  // runs both.
+  const std::vector<BatchPath> paths = testing::availableBatchPaths();
   ASSERT_FALSE(paths.empty());
   EXPECT_EQ(paths.front(), BatchPath::kPortable);
   EXPECT_NE(std::find(paths.begin(), paths.end(), batchPath()), paths.end())

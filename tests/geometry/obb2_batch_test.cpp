@@ -11,6 +11,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../support/batch_paths.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/batch_path.hpp"
@@ -21,27 +22,6 @@ namespace cardemo {
 namespace {
 
 using testing::Random;
-
-// Every path this build and CPU can run; the fallback is always there.
-std::vector<BatchPath> availablePaths() {
-  std::vector<BatchPath> paths{BatchPath::kPortable};
-  for (const BatchPath path : {BatchPath::kAvx2, BatchPath::kAvx512}) {
-    if (batchPathAvailable(path)) paths.push_back(path);
-  }
-  return paths;
-}
-
-// Restores the process-wide path when a test ends.
-class PathGuard {
- public:
-  PathGuard() : saved_(batchPath()) {}
-  ~PathGuard() { setBatchPath(saved_); }
-  PathGuard(const PathGuard&) = delete;
-  PathGuard& operator=(const PathGuard&) = delete;
-
- private:
-  BatchPath saved_;
-};
 
 bool sameBits(double x, double y) {
   return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
@@ -155,7 +135,7 @@ TEST(Obb2Batch, StoresTheBoxesExactly) {
 }
 
 TEST(Obb2Batch, EqualsScalarBitForBitOnEveryPath) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   Random rng(2024);
   const int batches = testing::scaledCount(4000);
   int pairs = 0, hits = 0;
@@ -163,7 +143,7 @@ TEST(Obb2Batch, EqualsScalarBitForBitOnEveryPath) {
     const Batch batch = randomBatch(rng, 67);
     const Obb2Batch many(batch.boxes);
     std::vector<Outputs> per_path;
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       per_path.push_back(runBatch(batch.a, many));
       const Outputs& o = per_path.back();
@@ -193,7 +173,7 @@ TEST(Obb2Batch, EqualsScalarBitForBitOnEveryPath) {
 }
 
 TEST(Obb2Batch, AgreesWithTheExactOracleOnEveryPath) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   Random rng(77);
   const int batches = testing::scaledCount(600);
   int checked = 0, borderline = 0;
@@ -201,7 +181,7 @@ TEST(Obb2Batch, AgreesWithTheExactOracleOnEveryPath) {
   for (int k = 0; k < batches; ++k) {
     const Batch batch = randomBatch(rng, 40);
     const Obb2Batch many(batch.boxes);
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       const Outputs o = runBatch(batch.a, many);
       for (std::size_t i = 0; i < batch.boxes.size(); ++i) {
@@ -230,12 +210,12 @@ TEST(Obb2Batch, AgreesWithTheExactOracleOnEveryPath) {
 }
 
 TEST(Obb2Batch, EveryTailLengthMatchesScalar) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   Random rng(5);
   const Obb2 a = rng.box({3, -2}, 1.0, 5.0);
   std::vector<Obb2> all;
   for (int i = 0; i < 13; ++i) all.push_back(boxFor(a, rng));
-  for (const BatchPath path : availablePaths()) {
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     for (std::size_t n = 0; n <= all.size(); ++n) {
       const Obb2Batch many(std::span<const Obb2>(all.data(), n));
@@ -249,7 +229,7 @@ TEST(Obb2Batch, EveryTailLengthMatchesScalar) {
 }
 
 TEST(Obb2Batch, TouchingCountsAsHitFarFromTheOrigin) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   const Eigen::Vector2d far{4194304.0, -4194304.0};
   const Obb2 a{far, {1, 0}, {2.25, 1.0}};
   // Sharing an edge, sharing a corner, a hair apart, and turned 90 degrees sharing an edge.
@@ -258,7 +238,7 @@ TEST(Obb2Batch, TouchingCountsAsHitFarFromTheOrigin) {
                                 {far + Eigen::Vector2d(4.5 + 0x1p-20, 0), {1, 0}, {2.25, 1.0}},
                                 {far + Eigen::Vector2d(3.25, 0.0), {0, 1}, {2.0, 1.0}}};
   const Obb2Batch many(boxes);
-  for (const BatchPath path : availablePaths()) {
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     const Outputs o = runBatch(a, many);
     EXPECT_EQ(o.hit, (std::vector<std::uint8_t>{1, 1, 0, 1})) << batchPathName(path);
@@ -280,7 +260,7 @@ std::vector<Obb2> carsAround(const Obb2& a, Random& rng, int n, double reach) {
 }
 
 TEST(Obb2Batch, FloatFilterDecidesAlmostEveryRandomPair) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   Random rng(31);
   std::size_t pairs = 0, sent_on = 0;
   for (int k = 0; k < testing::scaledCount(200); ++k) {
@@ -288,7 +268,7 @@ TEST(Obb2Batch, FloatFilterDecidesAlmostEveryRandomPair) {
     const std::vector<Obb2> boxes = carsAround(a, rng, 500, 6.0);
     const Obb2Batch many(boxes);
     ASSERT_TRUE(many.filterUsable());
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       std::vector<std::uint8_t> hit(boxes.size());
       const std::size_t undecided = overlapObb2Batch(a, many, hit);
@@ -312,7 +292,7 @@ TEST(Obb2Batch, FloatFilterDecidesAlmostEveryRandomPair) {
 // of either sign from 1e-12 m to 1 mm, boxes from 1 cm to 100 m, the query near the batch or far
 // from its reference point, batches spread over up to 1e4 m, 1e7 m from the origin.
 TEST(Obb2Batch, NearTouchingPairsAtTheFilterMarginMatchScalar) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   Random rng(4242);
   std::size_t pairs = 0, sent_on = 0;
   for (int k = 0; k < testing::scaledCount(1500); ++k) {
@@ -337,7 +317,7 @@ TEST(Obb2Batch, NearTouchingPairsAtTheFilterMarginMatchScalar) {
     // Now and then a far box widens the batch, which moves its reference point away from A.
     if (rng.integer(0, 3) == 0) boxes.push_back(rng.box(a.center + rng.farPoint(1e4), 1.0, 5.0));
     const Obb2Batch many(boxes);
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       std::vector<std::uint8_t> hit(boxes.size());
       const std::size_t undecided = overlapObb2Batch(a, many, hit);
@@ -359,7 +339,7 @@ TEST(Obb2Batch, NearTouchingPairsAtTheFilterMarginMatchScalar) {
 }
 
 TEST(Obb2Batch, TinyHugeAndOutOfRangeBoxesMatchScalar) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   Random rng(8);
   // Half extents down to 1e-40 m (float underflows), coordinates up to 1e25 m (past the filter's
   // 2^60 m range: that batch and that query go to the double kernel whole).
@@ -376,7 +356,7 @@ TEST(Obb2Batch, TinyHugeAndOutOfRangeBoxesMatchScalar) {
   const Obb2Batch tiny_batch(tiny), huge_batch(huge);
   EXPECT_TRUE(tiny_batch.filterUsable());
   EXPECT_FALSE(huge_batch.filterUsable());
-  for (const BatchPath path : availablePaths()) {
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     for (const Obb2* a : {&small_a, &far_a, &plain_a}) {
       for (const auto* batch : {&tiny, &huge}) {
@@ -396,7 +376,7 @@ TEST(Obb2Batch, TinyHugeAndOutOfRangeBoxesMatchScalar) {
 }
 
 TEST(BatchPath, TheEnvironmentNamesEachPathAndFallsBackToANarrowerOne) {
-  const std::vector<BatchPath> paths = availablePaths();
+  const std::vector<BatchPath> paths = testing::availableBatchPaths();
   const BatchPath widest = paths.back();
   EXPECT_EQ(batchPathNamed(nullptr), widest);
   EXPECT_EQ(batchPathNamed("fastest"), widest);
@@ -408,7 +388,7 @@ TEST(BatchPath, TheEnvironmentNamesEachPathAndFallsBackToANarrowerOne) {
 }
 
 TEST(BatchPath, ForcingTheFallbackSticksAndAvx2IsUsedWhenAvailable) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   setBatchPath(BatchPath::kPortable);
   EXPECT_EQ(batchPath(), BatchPath::kPortable);
   EXPECT_TRUE(batchPathAvailable(BatchPath::kPortable));

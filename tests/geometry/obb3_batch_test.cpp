@@ -11,6 +11,7 @@
 #include <functional>
 #include <vector>
 
+#include "../support/batch_paths.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/batch_path.hpp"
 #include "random_cases3.hpp"
@@ -25,23 +26,6 @@ constexpr double kSepTolerance = 2e-6;  // CONTRACT: sep within 2e-6 m
 // Batch and scalar are both within ~1e-14 m of the truth here; 1e-9 m leaves room for sizes and
 // offsets up to 1e7 m while still catching any wrong axis or sign.
 constexpr double kScalarTolerance = 1e-9;
-
-std::vector<BatchPath> availablePaths() {
-  std::vector<BatchPath> paths{BatchPath::kPortable};
-  if (batchPathAvailable(BatchPath::kAvx2)) paths.push_back(BatchPath::kAvx2);
-  return paths;
-}
-
-class PathGuard {
- public:
-  PathGuard() : saved_(batchPath()) {}
-  ~PathGuard() { setBatchPath(saved_); }
-  PathGuard(const PathGuard&) = delete;
-  PathGuard& operator=(const PathGuard&) = delete;
-
- private:
-  BatchPath saved_;
-};
 
 bool sameBits(double x, double y) {
   return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
@@ -72,7 +56,7 @@ struct Tally {
 void runClass(const char* name, std::uint64_t seed,
               const std::function<Pair3(std::mt19937_64&)>& gen, int count = 1500,
               bool strict_hit = false) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   std::mt19937_64 rng(seed);
   Tally t;
   const int n = test3::scaledCount(count);
@@ -82,7 +66,7 @@ void runClass(const char* name, std::uint64_t seed,
     const Obb3Batch many(boxes);
     std::vector<std::vector<double>> seps;
     std::vector<std::vector<std::uint8_t>> hits;
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       seps.emplace_back(boxes.size());
       hits.emplace_back(boxes.size(), 7);
@@ -165,9 +149,9 @@ TEST(Obb3BatchRandom, Containment) {
 TEST(Obb3BatchRandom, ExactTouchingIsAHit) {
   // batchFor only adds moved copies at random gaps; the generated B itself touches exactly.
   runClass("touching", 0xba7c0008, test3::touchingPair, 1500, false);
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   std::mt19937_64 rng(0xba7c0009);
-  for (const BatchPath path : availablePaths()) {
+  for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
     for (int k = 0; k < 500; ++k) {
       const Pair3 p = test3::touchingPair(rng);
@@ -188,7 +172,7 @@ TEST(Obb3BatchRandom, ExactTouchingIsAHit) {
 // randomly rotated boxes (every lane group taking the fast path), on every path: the verdict is
 // the exact one whenever |sep| > 1e-6 m, and sep is within 2^-39 of the pair's scale of the scalar.
 TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   std::mt19937_64 rng(0xba7c000a);
   const int n = test3::scaledCount(300);
   int pairs = 0, hits = 0;
@@ -214,7 +198,7 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
     const Obb3Batch many(boxes);
     std::vector<std::vector<double>> seps;
     std::vector<std::vector<std::uint8_t>> hit_sets;
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       seps.emplace_back(boxes.size());
       hit_sets.emplace_back(boxes.size(), 7);
@@ -250,7 +234,7 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
 
 // Crossed beams near-parallel to 1e-15 rad far from the origin: only an edge axis separates them.
 TEST(Obb3Batch, CrossedBeamsSeparatedByAnEdgeAxisOnEveryPath) {
-  PathGuard guard;
+  testing::BatchPathGuard guard;
   for (const double angle : {1e-15, 1e-12, 1e-9, 1e-6, 1e-3}) {
     const Eigen::Quaterniond tilt(Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()));
     const Obb3 a =
@@ -264,7 +248,7 @@ TEST(Obb3Batch, CrossedBeamsSeparatedByAnEdgeAxisOnEveryPath) {
       boxes.push_back(b);
     }
     const Obb3Batch many(boxes);
-    for (const BatchPath path : availablePaths()) {
+    for (const BatchPath path : testing::availableBatchPaths()) {
       setBatchPath(path);
       std::vector<double> sep(boxes.size());
       std::vector<std::uint8_t> hit(boxes.size());
