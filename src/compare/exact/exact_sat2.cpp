@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "compare/exact/exact_numbers.hpp"
 #include "compare/exact/exact_sat.hpp"
 
 namespace cardemo::exact {
@@ -65,15 +66,6 @@ void project(const Shape& s, const Point& axis, mpq_class& lo, mpq_class& hi) {
   }
 }
 
-// Nearest double to x (mpf_get_d truncates towards zero).
-double roundToDouble(const mpf_class& x) {
-  const double t = x.get_d();
-  const double away = std::nextafter(t, x >= 0 ? HUGE_VAL : -HUGE_VAL);
-  const mpf_class et = abs(x - mpf_class(t, kFloatBits));
-  const mpf_class ea = abs(x - mpf_class(away, kFloatBits));
-  return ea < et ? away : t;
-}
-
 ExactResult collideShapes(const Shape& a, const Shape& b) {
   bool separated = false;
   bool have_best = false;
@@ -98,7 +90,7 @@ ExactResult collideShapes(const Shape& a, const Shape& b) {
     }
   }
   // Rational SAT decides the hit exactly; the separation is only for reporting.
-  return {!separated, have_best ? roundToDouble(best) : 0.0};
+  return {!separated, have_best ? nearestDouble(best) : 0.0};
 }
 
 // Polygons: every coordinate is a double, so all of them are integers times 2^e for the smallest
@@ -109,16 +101,6 @@ long lowestBitExponent(double x) {
   int e = 0;
   std::frexp(x, &e);
   return static_cast<long>(e) - std::numeric_limits<double>::digits;
-}
-
-mpz_class scaledInteger(double x, long e) {
-  if (x == 0.0) return 0;
-  int xe = 0;
-  const double frac = std::frexp(x, &xe);
-  mpz_class m(std::ldexp(frac, std::numeric_limits<double>::digits));  // exact 53-bit integer
-  const long shift = static_cast<long>(xe) - std::numeric_limits<double>::digits - e;
-  mpz_mul_2exp(m.get_mpz_t(), m.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
-  return m;
 }
 
 struct IntPolygon {
@@ -201,7 +183,7 @@ ExactResult collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
   } else {
     mpf_div_2exp(best.get_mpf_t(), best.get_mpf_t(), static_cast<mp_bitcnt_t>(-e));
   }
-  return {!separated, roundToDouble(best)};
+  return {!separated, nearestDouble(best)};
 }
 
 }  // namespace cardemo::exact

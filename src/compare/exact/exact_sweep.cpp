@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "compare/exact/exact_numbers.hpp"
+
 namespace cardemo::exact {
 namespace {
 
@@ -23,16 +25,6 @@ long lowestBitExponent(double x) {
   int e = 0;
   std::frexp(x, &e);
   return std::min(0L, static_cast<long>(e) - std::numeric_limits<double>::digits);
-}
-
-mpz_class scaledInteger(double x, long e) {
-  if (x == 0.0) return 0;
-  int xe = 0;
-  const double frac = std::frexp(x, &xe);
-  mpz_class m(std::ldexp(frac, std::numeric_limits<double>::digits));  // exact 53-bit integer
-  const long shift = static_cast<long>(xe) - std::numeric_limits<double>::digits - e;
-  mpz_mul_2exp(m.get_mpz_t(), m.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
-  return m;
 }
 
 struct IntVec {
@@ -123,14 +115,14 @@ class Sweep {
       mpf_class t(enter_.num, kFloatBits);
       t /= mpf_class(enter_.den, kFloatBits);
       mpf_div_2exp(t.get_mpf_t(), t.get_mpf_t(), static_cast<mp_bitcnt_t>(-e_));
-      r.toi = roundToDouble(t);
+      r.toi = nearestDouble(t);
       r.normal = unit(enter_axis_, enter_sign_);
       mpf_class len(enter_axis_.x * enter_axis_.x + enter_axis_.y * enter_axis_.y, kFloatBits);
       mpf_class c(abs(enter_v_), kFloatBits);
       c /= sqrt(len);
       // closing = |V| / |N| 2^e.
       mpf_div_2exp(c.get_mpf_t(), c.get_mpf_t(), static_cast<mp_bitcnt_t>(-e_));
-      r.closing = roundToDouble(c);
+      r.closing = nearestDouble(c);
     } else {
       r.toi = 0.0;
       r.normal = unit(start_axis_, start_sign_);
@@ -151,19 +143,11 @@ class Sweep {
   mpf_class start_gap_{0, kFloatBits};
 
   // Nearest double to x (mpf_get_d truncates towards zero).
-  static double roundToDouble(const mpf_class& x) {
-    const double t = x.get_d();
-    const double away = std::nextafter(t, x >= 0 ? HUGE_VAL : -HUGE_VAL);
-    const mpf_class et = abs(x - mpf_class(t, kFloatBits));
-    const mpf_class ea = abs(x - mpf_class(away, kFloatBits));
-    return ea < et ? away : t;
-  }
-
   static Eigen::Vector2d unit(const IntVec& n, int sign) {
     mpf_class len(n.x * n.x + n.y * n.y, kFloatBits);
     len = sqrt(len);
     const mpf_class x = mpf_class(n.x, kFloatBits) / len, y = mpf_class(n.y, kFloatBits) / len;
-    return {sign * roundToDouble(x), sign * roundToDouble(y)};
+    return {sign * nearestDouble(x), sign * nearestDouble(y)};
   }
 };
 
@@ -218,6 +202,7 @@ ExactSweep sweepObbPolygon(const Obb2& a, const Eigen::Vector2d& displacement,
   const IntBox ia = intBox(a, e);
   const IntVec d{scaledInteger(displacement.x(), e), scaledInteger(displacement.y(), e)};
   std::vector<IntVec> vertices;
+  vertices.reserve(static_cast<std::size_t>(b.count));
   for (int i = 0; i < b.count; ++i) {
     vertices.push_back({scaledInteger(b.vertex(i).x(), e), scaledInteger(b.vertex(i).y(), e)});
   }
