@@ -41,7 +41,8 @@ Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
       center_[static_cast<std::size_t>(k)].push_back(b.center[k]);
       half_[static_cast<std::size_t>(k)].push_back(b.half[k]);
       for (int j = 0; j < 3; ++j) {
-        rotation_[static_cast<std::size_t>(3 * j + k)].push_back(b.rotation(k, j));
+        rotation_[3 * static_cast<std::size_t>(j) + static_cast<std::size_t>(k)].push_back(
+            b.rotation(k, j));
       }
     }
   }
@@ -54,7 +55,8 @@ Obb3 Obb3Batch::box(std::size_t i) const {
     b.center[k] = center_[static_cast<std::size_t>(k)][i];
     b.half[k] = half_[static_cast<std::size_t>(k)][i];
     for (int j = 0; j < 3; ++j)
-      b.rotation(k, j) = rotation_[static_cast<std::size_t>(3 * j + k)][i];
+      b.rotation(k, j) =
+          rotation_[3 * static_cast<std::size_t>(j) + static_cast<std::size_t>(k)][i];
   }
   return b;
 }

@@ -65,7 +65,7 @@ SatResult2 collideObb2(const Obb2& a, const Obb2& b) {
   const Eigen::Vector2d axes[4] = {a.axis, a.perp(), b.axis, b.perp()};
   const double along[4] = {p.t.x(), p.t.y(), tbx, tby};
   const Eigen::Vector2d normal = along[best] < 0.0 ? Eigen::Vector2d(-axes[best]) : axes[best];
-  const SatResult2 r{gaps[best] <= 0.0, gaps[best], normal};
+  SatResult2 r{gaps[best] <= 0.0, gaps[best], normal};
   assert(isFinite(r));
   return r;
 }

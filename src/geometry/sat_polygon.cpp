@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "geometry/convex_polygon.hpp"
 #include "geometry/double2.hpp"
@@ -19,6 +20,8 @@ namespace {
 using simd::Double2;
 
 constexpr int kMaxPoints = ConvexPolygon::kMaxVertices;
+constexpr double kPlusInfinity = std::numeric_limits<double>::infinity();
+constexpr double kMinusInfinity = -kPlusInfinity;
 constexpr int kMaxSlots = 2 * kMaxPoints;  // both shapes' axes, each padded to an even count
 
 // One shape in the pair's frame (coordinates relative to the reference point) and its own axes.
@@ -134,8 +137,8 @@ struct Measured {
   alignas(16) double backward[kMaxSlots];
   alignas(16) double key[kMaxSlots];
   int slots = 0;
-  Double2 largest_key = simd::make(-INFINITY, -INFINITY);
-  Double2 smallest_length2 = simd::make(INFINITY, INFINITY);
+  Double2 largest_key = simd::make(kMinusInfinity, kMinusInfinity);
+  Double2 smallest_length2 = simd::make(kPlusInfinity, kPlusInfinity);
 };
 
 struct Extent2 {
@@ -207,7 +210,7 @@ template <class Own, class Other, bool kOwnIsA>
     const Double2 length2 = nx * nx + ny * ny;
     Double2 key = gap * simd::abs(gap) / length2;
     // A padding axis's own extent is not its edge's: it never wins.
-    if (Own::kAxes == 0 && q + 1 == axes) key = simd::make(simd::lane0(key), -INFINITY);
+    if (Own::kAxes == 0 && q + 1 == axes) key = simd::make(simd::lane0(key), kMinusInfinity);
     simd::storeAligned(m.forward + first + q, forward);
     simd::storeAligned(m.backward + first + q, backward);
     simd::storeAligned(m.key + first + q, key);
@@ -218,8 +221,8 @@ template <class Own, class Other, bool kOwnIsA>
 
 template <class KindA, class KindB>
 [[gnu::noinline]] void measureAxes(const Shape& a, const Shape& b, Measured& m) {
-  Double2 largest = simd::make(-INFINITY, -INFINITY);
-  Double2 smallest = simd::make(INFINITY, INFINITY);
+  Double2 largest = simd::make(kMinusInfinity, kMinusInfinity);
+  Double2 smallest = simd::make(kPlusInfinity, kPlusInfinity);
   const int a_slots = a.axis_count + a.axis_count % 2;
   measureAxesOf<KindA, KindB, true>(a, b, 0, m, largest, smallest);
   measureAxesOf<KindB, KindA, false>(b, a, a_slots, m, largest, smallest);
@@ -305,13 +308,13 @@ SatResult2 collideRescaled(const Shape& a, const Shape& b) {
   const int k = largest > 0.0 ? std::ilogb(largest) : 0;
   const Shape sa = rescaled(a, k), sb = rescaled(b, k);
   Measured m = measure(sa, sb);
-  double largest_key = -INFINITY;
+  double largest_key = kMinusInfinity;
   for (int i = 0; i < m.slots; ++i) {
     const Eigen::Vector2d n = slotAxis(sa, sb, i);
-    if (n.x() == 0.0 && n.y() == 0.0) m.key[i] = -INFINITY;
+    if (n.x() == 0.0 && n.y() == 0.0) m.key[i] = kMinusInfinity;
     largest_key = std::max(largest_key, m.key[i]);
   }
-  if (!(largest_key > -INFINITY)) return {true, 0.0, Eigen::Vector2d::UnitX()};
+  if (!(largest_key > kMinusInfinity)) return {true, 0.0, Eigen::Vector2d::UnitX()};
   m.largest_key = simd::make(largest_key, largest_key);
   SatResult2 r = winner(sa, sb, m);
   r.separation = std::scalbn(r.separation, k);
@@ -325,12 +328,12 @@ SatResult2 collide(const Shape& a, const Shape& b) {
     const double smallest =
         std::min(simd::lane0(m.smallest_length2), simd::lane1(m.smallest_length2));
     if (smallest > kSmallestFastLength2) {
-      const SatResult2 r = winner(a, b, m);
+      SatResult2 r = winner(a, b, m);
       assert(isFinite(r));
       return r;
     }
   }
-  const SatResult2 r = collideRescaled(a, b);
+  SatResult2 r = collideRescaled(a, b);
   assert(isFinite(r));
   return r;
 }

@@ -46,7 +46,7 @@ class Recorder {
  private:
   void writeRun();
   bool flushPending();
-  void fail(const std::string& why);
+  void fail(const std::string& what);
   std::string path_;
   std::string part_path_;
   int fd_ = -1;
