@@ -83,8 +83,6 @@ void registerSize(std::size_t n) {
                                      benchmark::ClobberMemory();
                                    });
                                  });
-    // The AVX-512 path is 2D only: its 3D kernels are the AVX2 ones, measured once.
-    if (path == BatchPath::kAvx512) continue;
     benchmark::RegisterBenchmark(name("overlapObb3", engine).c_str(),
                                  [n, path](benchmark::State& s) {
                                    const PairSet3& set = batchSet3(n);

@@ -8,7 +8,7 @@
 /// fmadd(a, b, c) = a*b + c, fmsub(a, b, c) = a*b - c, fnmadd(a, b, c) = c - a*b (each rounded
 /// once), abs, max, and gtBits(a, b): bit k set when lane k of a > lane k of b.
 //
-// Included by batch2_avx2.cpp and batch2_avx512.cpp only; everything here has internal linkage.
+// Included by batch2_avx2.cpp and batch_avx512.cpp only; everything here has internal linkage.
 //
 // Why the verdict is exact (docs/architecture.md, "The float pre-filter", has the derivation).
 // Write u = 2^-24, R = |cB - cA|, H = hAx + hAy + hBx + hBy, and g_k for the gap on axis k computed

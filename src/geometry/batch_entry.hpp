@@ -88,11 +88,15 @@ std::size_t overlap2FilteredAvx2(const Box2One& a, const Box2Arrays& b, const Bo
 std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                    const Box2FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit);
-// 2D on AVX-512F, eight doubles per lane group (batch2_avx512.cpp).
+// On AVX-512F, eight doubles per lane group (batch_avx512.cpp).
 void overlap2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                     std::uint8_t* hit);
 void collide2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                     const Sat2Out& out);
+void overlap3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                    std::uint8_t* hit);
+void separation3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                       double* separation);
 void overlap3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
                   std::uint8_t* hit);
 void separation3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,

@@ -1,6 +1,6 @@
 #pragma once
 /// Internal to the batch kernels: each kernel written once over a "lane" type, so the portable
-/// build (a lane is one double) and the AVX2 build (a lane is four doubles) run the same IEEE
+/// build (a lane is one double), AVX2 (four doubles) and AVX-512F (eight) run the same IEEE
 /// operations in the same order and give bit-identical results.
 ///
 /// A lane type L provides: L::kWidth, L::Mask, L::load(const double*), L::splat(double),
@@ -8,11 +8,11 @@
 /// select(mask, if_true, if_false), store(double*, L), storeHits(uint8_t*, separated mask) and
 /// allOf(mask) (true when every lane is set; the 3D filter branches on it).
 //
-// Included by exactly two translation units, batch_portable.cpp and batch_avx2.cpp (the latter
-// compiled with -mavx2 -mfma). Everything here has internal linkage, so the linker can never
-// substitute one instantiation for the other. Multiplications and additions are written out
-// separately and -ffp-contract=off forbids fusing them; the only fused operations are the
-// explicit fma calls of the 3D edge axes, which are correctly rounded on both paths.
+// Included by exactly three translation units, batch_portable.cpp, batch_avx2.cpp (compiled with
+// -mavx2 -mfma) and batch_avx512.cpp (-mavx512f). Everything here has internal linkage, so the
+// linker can never substitute one instantiation for another. Multiplications and additions are
+// written out separately and -ffp-contract=off forbids fusing them; the only fused operations are
+// the explicit fma calls of the 3D edge axes, which are correctly rounded on every path.
 
 #include <cstddef>
 #include <cstdint>

@@ -122,8 +122,13 @@ void overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std::uint8
   assert(hit.size() == many.size());
   batch_detail::Box3One one = unpack(a);
   setFilter(a, many, one);
+#if defined(CARDEMO_BATCH_AVX512)
+  if (batchPath() == BatchPath::kAvx512) {
+    batch_detail::overlap3Avx512(one, many.arrays(), 0, many.size(), hit.data());
+    return;
+  }
+#endif
 #if defined(CARDEMO_BATCH_AVX2)
-  // The AVX-512 path is 2D only; its 3D kernels are the AVX2 ones.
   if (batchPath() != BatchPath::kPortable) {
     batch_detail::overlap3Avx2(one, many.arrays(), 0, many.size(), hit.data());
     return;
@@ -136,8 +141,13 @@ void separationObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<double>
   assert(separation.size() == many.size());
   batch_detail::Box3One one = unpack(a);
   setFilter(a, many, one);
+#if defined(CARDEMO_BATCH_AVX512)
+  if (batchPath() == BatchPath::kAvx512) {
+    batch_detail::separation3Avx512(one, many.arrays(), 0, many.size(), separation.data());
+    return;
+  }
+#endif
 #if defined(CARDEMO_BATCH_AVX2)
-  // The AVX-512 path is 2D only; its 3D kernels are the AVX2 ones.
   if (batchPath() != BatchPath::kPortable) {
     batch_detail::separation3Avx2(one, many.arrays(), 0, many.size(), separation.data());
     return;

@@ -1,15 +1,15 @@
-// The 2D batch kernels with AVX-512F: the boolean SAT through the float pre-filter, sixteen pairs
-// per instruction, and both double kernels eight pairs per instruction (the SAT with separation
-// and normal, and the boolean SAT for the lane groups the filter leaves undecided). Built with
-// -mavx512f (CMakeLists.txt) and called only after batchPathAvailable says the CPU has it. 2D only:
-// on this path the 3D kernels run their AVX2 versions.
+// The batch kernels with AVX-512F: the 2D boolean SAT through the float pre-filter, sixteen pairs
+// per instruction, and every double kernel eight pairs per instruction (the 2D SAT with separation
+// and normal, the 2D boolean SAT for the lane groups the filter leaves undecided, and both 3D
+// kernels with their A-frame filter). Built with -mavx512f (CMakeLists.txt) and called only after
+// batchPathAvailable says the CPU has it.
 //
 // Includes nothing but the intrinsics and the kernel headers, for the reason given in
 // batch_avx2.cpp.
 
 #if defined(CARDEMO_BATCH_AVX512)
 #if !defined(__AVX512F__)
-#error "batch2_avx512.cpp needs -mavx512f (set in CMakeLists.txt)"
+#error "batch_avx512.cpp needs -mavx512f (set in CMakeLists.txt)"
 #endif
 
 #include <immintrin.h>
@@ -82,6 +82,16 @@ struct Double8 {
 [[gnu::always_inline]] inline Double8 operator*(Double8 a, Double8 b) {
   return {_mm512_mul_pd(a.v, b.v)};
 }
+[[gnu::always_inline]] inline Double8 operator/(Double8 a, Double8 b) {
+  return {_mm512_div_pd(a.v, b.v)};
+}
+// The zero-masked form with every lane on, for the same GCC bug as max above.
+[[gnu::always_inline]] inline Double8 sqrt(Double8 a) {
+  return {_mm512_maskz_sqrt_pd(static_cast<__mmask8>(0xFF), a.v)};
+}
+[[gnu::always_inline]] inline Double8 fma(Double8 a, Double8 b, Double8 c) {
+  return {_mm512_fmadd_pd(a.v, b.v, c.v)};
+}
 // Flipping the sign bit is exactly what scalar negation does, zeros and NaNs included.
 [[gnu::always_inline]] inline Double8 operator-(Double8 a) {
   return {_mm512_castsi512_pd(
@@ -99,6 +109,12 @@ struct Double8 {
 }
 [[gnu::always_inline]] inline Mask8 operator|(Mask8 a, Mask8 b) {
   return {static_cast<__mmask8>(a.m | b.m)};
+}
+[[gnu::always_inline]] inline Mask8 operator&(Mask8 a, Mask8 b) {
+  return {static_cast<__mmask8>(a.m & b.m)};
+}
+[[gnu::always_inline]] inline bool allOf(Mask8 m) {
+  return m.m == 0xFF;
 }
 [[gnu::always_inline]] inline Double8 select(Mask8 m, Double8 a, Double8 b) {
   return {_mm512_mask_blend_pd(m.m, b.v, a.v)};
@@ -134,6 +150,16 @@ void overlap2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, st
 void collide2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                     const Sat2Out& out) {
   runCollide2<Double8>(a, b, first, last, out);
+}
+
+void overlap3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                    std::uint8_t* hit) {
+  runOverlap3<Double8>(a, b, first, last, hit);
+}
+
+void separation3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
+                       double* separation) {
+  runSeparation3<Double8>(a, b, first, last, separation);
 }
 
 }  // namespace cardemo::batch_detail
