@@ -30,8 +30,8 @@ bool batchPathAvailable(BatchPath path) {
   if (path == BatchPath::kPortable) return true;
 #if defined(__x86_64__) || defined(__i386__)
   // The AVX2 kernels also use FMA (the error-free products of the 3D edge axes, the float
-  // pre-filter); the AVX-512 path keeps the AVX2 3D kernels, so it needs all three. GCC's check
-  // includes the operating system's support for the wider registers (XGETBV).
+  // pre-filter); on the AVX-512 path the grid scan keeps its AVX2 version, so it needs all three.
+  // GCC's check includes the operating system's support for the wider registers (XGETBV).
   const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #if defined(CARDEMO_BATCH_AVX2)
   if (path == BatchPath::kAvx2) return avx2;

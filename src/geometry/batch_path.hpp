@@ -8,7 +8,7 @@ namespace cardemo {
 enum class BatchPath {
   kPortable,  ///< One pair at a time, plain C++: runs on any CPU.
   kAvx2,      ///< Four pairs at a time with AVX2 and FMA (x86-64 CPUs that have both).
-  kAvx512,    ///< AVX-512F for the 2D kernels (eight doubles, sixteen floats), AVX2 for 3D.
+  kAvx512,    ///< AVX-512F for the 2D and 3D kernels (eight doubles, sixteen floats).
 };
 
 /// True when `path` was built and the CPU can run it.
