@@ -1,5 +1,7 @@
 #include "platform/sdl_canvas.hpp"
 
+#include <SDL_image.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,6 +37,9 @@ SdlCanvas::SdlCanvas(SDL_Renderer* renderer, const std::string& font_path)
 }
 
 SdlCanvas::~SdlCanvas() {
+  for (SDL_Texture* t : images_) {
+    if (t != nullptr) SDL_DestroyTexture(t);
+  }
   for (auto& [key, t] : texts_) SDL_DestroyTexture(t.texture);
   for (auto& [size, f] : fonts_) {
     if (f != nullptr) TTF_CloseFont(f);
@@ -134,6 +139,49 @@ Eigen::Vector2f SdlCanvas::textSize(std::string_view utf8, int pixel_height) {
   int h = 0;
   TTF_SizeUTF8(f, std::string(utf8).c_str(), &w, &h);
   return {static_cast<float>(w), static_cast<float>(h)};
+}
+
+std::string SdlCanvas::loadImages(const std::string& dir) {
+  static constexpr std::array<const char*, kImageCount> kFiles{"car.png", "wheel.png",
+                                                               "ground.png"};
+  std::string missing;
+  for (std::size_t i = 0; i < kFiles.size(); ++i) {
+    if (images_[i] != nullptr) continue;
+    const std::string path = dir + "/" + kFiles[i];
+    SDL_Surface* surface = IMG_Load(path.c_str());
+    if (surface == nullptr) {
+      missing += (missing.empty() ? "cannot load sprite " : ", ") + path;
+      continue;
+    }
+    images_[i] = SDL_CreateTextureFromSurface(renderer_, surface);
+    SDL_FreeSurface(surface);
+    if (images_[i] == nullptr) {
+      missing += (missing.empty() ? "cannot load sprite " : ", ") + path;
+      continue;
+    }
+    SDL_SetTextureBlendMode(images_[i], SDL_BLENDMODE_BLEND);
+    // Sprites are drawn smaller than they are stored: filter rather than drop texels.
+    SDL_SetTextureScaleMode(images_[i], SDL_ScaleModeLinear);
+  }
+  return missing;
+}
+
+bool SdlCanvas::hasImage(ImageId id) const {
+  return images_[static_cast<std::size_t>(id)] != nullptr;
+}
+
+void SdlCanvas::image(ImageId id, const Eigen::Vector2f& center, float angle,
+                      const Eigen::Vector2f& size, const Rgba& tint) {
+  SDL_Texture* t = images_[static_cast<std::size_t>(id)];
+  if (t == nullptr || !center.allFinite() || !size.allFinite() || !std::isfinite(angle)) return;
+  if (!(size.x() > 0.5f && size.y() > 0.5f)) return;
+  SDL_SetTextureColorMod(t, tint.r, tint.g, tint.b);
+  SDL_SetTextureAlphaMod(t, tint.a);
+  const SDL_FRect dst{center.x() - 0.5f * size.x(), center.y() - 0.5f * size.y(), size.x(),
+                      size.y()};
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  SDL_RenderCopyExF(renderer_, t, nullptr, &dst, static_cast<double>(angle) * kDegrees, nullptr,
+                    SDL_FLIP_NONE);
 }
 
 }  // namespace cardemo

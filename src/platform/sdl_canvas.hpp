@@ -5,6 +5,7 @@
 #include <SDL.h>
 #include <SDL_ttf.h>
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,6 +24,11 @@ class SdlCanvas : public Canvas {
   SdlCanvas(const SdlCanvas&) = delete;
   SdlCanvas& operator=(const SdlCanvas&) = delete;
 
+  /// Loads the sprites from `dir` (car.png, wheel.png, ground.png, as scripts/make_sprites.py
+  /// writes them). Returns an empty string when all loaded, else one line naming what is missing;
+  /// sprites that did load are used either way, the others fall back to vector drawing.
+  std::string loadImages(const std::string& dir);
+
   /// Empty, or why text cannot be drawn (font not found or not loadable).
   [[nodiscard]] const std::string& error() const { return error_; }
 
@@ -34,6 +40,9 @@ class SdlCanvas : public Canvas {
   void text(const Eigen::Vector2f& top_left, std::string_view utf8, int pixel_height,
             const Rgba& color) override;
   [[nodiscard]] Eigen::Vector2f textSize(std::string_view utf8, int pixel_height) override;
+  [[nodiscard]] bool hasImage(ImageId id) const override;
+  void image(ImageId id, const Eigen::Vector2f& center, float angle, const Eigen::Vector2f& size,
+             const Rgba& tint) override;
 
  private:
   struct CachedText {
@@ -49,6 +58,7 @@ class SdlCanvas : public Canvas {
   std::map<int, TTF_Font*> fonts_;
   // Rendered white text by (size, string); tinted per draw with the texture's colour mod.
   std::map<std::pair<int, std::string>, CachedText> texts_;
+  std::array<SDL_Texture*, kImageCount> images_{};
   std::vector<SDL_Vertex> vertices_;
   std::vector<int> indices_;
 };

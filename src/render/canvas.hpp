@@ -15,6 +15,16 @@ struct Rgba {
   [[nodiscard]] bool operator==(const Rgba&) const = default;
 };
 
+/// The sprites a canvas may hold (assets/sprites/*.png, drawn by scripts/make_sprites.py).
+enum class ImageId : std::uint8_t {
+  kCarBody,  ///< A car seen from above, nose towards +x, light grey so a tint colours it.
+  kWheel,    ///< One tyre seen from above, rolling direction along +x.
+  kGround,   ///< A seamless asphalt tile.
+};
+
+/// Number of ImageId values.
+inline constexpr int kImageCount = 3;
+
 /// Abstract 2D canvas in pixels: origin at the top-left, y down.
 class Canvas {
  public:
@@ -31,6 +41,13 @@ class Canvas {
   /// Draws one line of UTF-8 text with its top-left corner at `top_left`.
   virtual void text(const Eigen::Vector2f& top_left, std::string_view utf8, int pixel_height,
                     const Rgba& color) = 0;
+  /// True when image() can draw `id` (the sprite was found and loaded).
+  [[nodiscard]] virtual bool hasImage(ImageId id) const = 0;
+  /// Draws image `id` scaled to `size` pixels, centred at `center`, turned by `angle` radians
+  /// clockwise on screen (screen y points down), each texel multiplied by `tint` (RGB and alpha).
+  /// Does nothing when hasImage(id) is false.
+  virtual void image(ImageId id, const Eigen::Vector2f& center, float angle,
+                     const Eigen::Vector2f& size, const Rgba& tint) = 0;
   /// Size in pixels that text() would cover.
   [[nodiscard]] virtual Eigen::Vector2f textSize(std::string_view utf8, int pixel_height) = 0;
 };

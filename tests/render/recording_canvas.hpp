@@ -41,6 +41,15 @@ class RecordingCanvas : public Canvas {
     Rgba color;          ///< Colour.
   };
 
+  /// An image call.
+  struct Image {
+    ImageId id;              ///< Which sprite.
+    Eigen::Vector2f center;  ///< Pixels.
+    float angle;             ///< Radians, clockwise on screen.
+    Eigen::Vector2f size;    ///< Pixels.
+    Rgba tint;               ///< Colour multiplier.
+  };
+
   explicit RecordingCanvas(Eigen::Vector2i size = {1280, 720}) : size_(size) {}
   [[nodiscard]] Eigen::Vector2i size() const override { return size_; }
   void clear(const Rgba& color) override {
@@ -48,6 +57,7 @@ class RecordingCanvas : public Canvas {
     fills.clear();
     lines.clear();
     texts.clear();
+    images.clear();
   }
   void fillConvex(std::span<const Eigen::Vector2f> points, const Rgba& color) override {
     fills.push_back({{points.begin(), points.end()}, color});
@@ -60,6 +70,11 @@ class RecordingCanvas : public Canvas {
             const Rgba& color) override {
     texts.push_back({top_left, std::string(utf8), color});
   }
+  [[nodiscard]] bool hasImage(ImageId) const override { return with_images; }
+  void image(ImageId id, const Eigen::Vector2f& center, float angle, const Eigen::Vector2f& size,
+             const Rgba& tint) override {
+    if (with_images) images.push_back({id, center, angle, size, tint});
+  }
   [[nodiscard]] Eigen::Vector2f textSize(std::string_view utf8, int pixel_height) override {
     return {0.6f * pixel_height * static_cast<float>(utf8.size()), 1.2f * pixel_height};
   }
@@ -69,6 +84,14 @@ class RecordingCanvas : public Canvas {
     std::vector<Fill> out;
     for (const Fill& f : fills) {
       if (f.color == color) out.push_back(f);
+    }
+    return out;
+  }
+  /// Image calls of one sprite.
+  [[nodiscard]] std::vector<Image> imagesOf(ImageId id) const {
+    std::vector<Image> out;
+    for (const Image& i : images) {
+      if (i.id == id) out.push_back(i);
     }
     return out;
   }
@@ -86,10 +109,12 @@ class RecordingCanvas : public Canvas {
     return false;
   }
 
-  Rgba cleared;             ///< Last clear colour.
-  std::vector<Fill> fills;  ///< Since the last clear.
-  std::vector<Line> lines;  ///< Since the last clear.
-  std::vector<Text> texts;  ///< Since the last clear.
+  Rgba cleared;               ///< Last clear colour.
+  std::vector<Fill> fills;    ///< Since the last clear.
+  std::vector<Line> lines;    ///< Since the last clear.
+  std::vector<Text> texts;    ///< Since the last clear.
+  std::vector<Image> images;  ///< Since the last clear.
+  bool with_images = false;   ///< What hasImage() answers (set it to test sprite drawing).
 
  private:
   Eigen::Vector2i size_;
