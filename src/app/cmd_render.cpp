@@ -11,6 +11,8 @@
 #include "io/replay_runner.hpp"
 #include "io/scene_json.hpp"
 #include "platform/png_render.hpp"
+#include "render/camera_rig.hpp"
+#include "render/effects.hpp"
 
 namespace cardemo::app {
 namespace {
@@ -22,6 +24,9 @@ struct RenderOptions {
   std::optional<std::int64_t> frame;
   bool debug = false;
   bool help = false;
+  bool sprites = false;
+  bool rig = false;
+  bool zoom_given = false;
   int width = 1280;
   int height = 720;
   double zoom = 12.0;
@@ -41,12 +46,23 @@ int fail(const std::string& message) {
   return 2;
 }
 
+// What watches the world step by step, as the window's do: hit feedback and the camera rig.
+struct Observers {
+  Effects effects;
+  CameraRig rig;
+  void step(World& world, const InputFrame& input) {
+    world.step(input);
+    effects.observe(world);
+    rig.step(world);
+  }
+};
+
 // Steps the world through the replay's inputs up to `frame`.
-void runReplayTo(World& world, const Replay& replay, std::int64_t frame) {
+void runReplayTo(World& world, Observers& observers, const Replay& replay, std::int64_t frame) {
   for (const InputRun& run : replay.runs) {
     for (std::int64_t i = 0; i < run.count; ++i) {
       if (world.frame() >= frame) return;
-      world.step(run.keys);
+      observers.step(world, run.keys);
     }
   }
 }
@@ -65,6 +81,9 @@ int runRenderCommand(const RenderOptions& options) {
     if (!(std::abs(c) <= 1e9)) return fail("cardemo render: --center must be two finite numbers");
   }
   std::optional<World> world;
+  std::optional<Observers> observers;
+  const Eigen::Vector2i viewport{options.width, options.height};
+  auto watch = [&] { observers.emplace(Observers{Effects(*world), CameraRig(*world, viewport)}); };
   if (isReplayFile(options.input)) {
     const Parsed<Replay> replay = loadReplay(options.input);
     if (!replay.ok()) return fail(replay.error().toString());
@@ -77,7 +96,8 @@ int runRenderCommand(const RenderOptions& options) {
                   " is beyond the end of the replay (frames 0 to " + std::to_string(total) + ")");
     }
     world.emplace(std::move(scene).value(), settingsForReplay(replay.value()));
-    runReplayTo(*world, replay.value(), frame);
+    watch();
+    runReplayTo(*world, *observers, replay.value(), frame);
   } else {
     if (!options.scene_path.empty()) {
       return fail(options.input + ": --scene applies to replays only (this is not a replay)");
@@ -85,8 +105,11 @@ int runRenderCommand(const RenderOptions& options) {
     Parsed<Scene> scene = loadScene(options.input);
     if (!scene.ok()) return fail(scene.error().toString());
     world.emplace(std::move(scene).value());
+    watch();
     // A scene has no inputs: frame N is N steps with nothing held.
-    for (std::int64_t i = 0; i < options.frame.value_or(0); ++i) world->step(InputFrame{});
+    for (std::int64_t i = 0; i < options.frame.value_or(0); ++i) {
+      observers->step(*world, InputFrame{});
+    }
   }
 
   RenderSettings settings;
@@ -95,6 +118,12 @@ int runRenderCommand(const RenderOptions& options) {
   settings.pixels_per_metre = options.zoom;
   if (!options.center.empty())
     settings.center = Eigen::Vector2d(options.center[0], options.center[1]);
+  if (options.rig) {
+    if (options.zoom_given) observers->rig.setBaseZoom(options.zoom);
+    settings.camera = observers->rig.camera(viewport, 1.0, 1.0, observers->effects.shake());
+  }
+  settings.options.effects = &observers->effects;
+  settings.options.sprites = options.sprites;
   settings.options.debug_overlay = options.debug;
   settings.options.help = options.help;
   settings.options.status = baseName(options.input) + "  -  " + world->scene().name;
@@ -126,12 +155,20 @@ void addRenderCommand(CLI::App& app, int& exit_code) {
   sub->add_flag("--debug", options->debug,
                 "Draw the debug overlay (AABB, OBBs, candidates, contacts, counters)");
   sub->add_flag("--help-panel", options->help, "Draw the F1 help panel");
+  sub->add_flag(
+      "--sprites", options->sprites,
+      "Draw cars, tyres and ground with the sprites in assets/sprites (default: vectors)");
+  sub->add_flag("--rig", options->rig,
+                "Frame the picture as the game does: look-ahead, speed zoom, held inside the walls "
+                "(zoom fitted to the scene unless --zoom is given)")
+      ->excludes("--center");
   sub->add_option("--width", options->width, "Image width in pixels (16 to 8192)")
       ->check(CLI::Range(16, 8192));
   sub->add_option("--height", options->height, "Image height in pixels (16 to 8192)")
       ->check(CLI::Range(16, 8192));
-  sub->add_option("--zoom", options->zoom, "Pixels per metre (0.01 to 10000)")
-      ->check(CLI::Range(0.01, 10000.0));
+  CLI::Option* zoom = sub->add_option("--zoom", options->zoom, "Pixels per metre (0.01 to 10000)")
+                          ->check(CLI::Range(0.01, 10000.0));
+  sub->parse_complete_callback([options, zoom] { options->zoom_given = zoom->count() > 0; });
   sub->callback([options, &exit_code] { exit_code = runRenderCommand(*options); });
 }
 

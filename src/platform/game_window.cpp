@@ -15,9 +15,12 @@
 #include "io/summary_json.hpp"
 #include "platform/png_save.hpp"
 #include "platform/sdl_canvas.hpp"
+#include "platform/sprite_path.hpp"
 #include "play/fixed_step_clock.hpp"
 #include "play/input_latch.hpp"
+#include "render/camera_rig.hpp"
 #include "render/draw_world.hpp"
+#include "render/effects.hpp"
 
 namespace cardemo {
 namespace {
@@ -51,7 +54,8 @@ void printFrame(std::int64_t frame) {
 }
 
 constexpr int kMaxStepsPerFrame = 8;
-constexpr double kMinZoom = 2.0, kMaxZoom = 80.0;
+// The +/- keys scale the camera rig's zoom by zoom / kDefaultZoom.
+constexpr double kDefaultZoom = 12.0, kMinZoom = 2.0, kMaxZoom = 80.0;
 constexpr double kMinSpeed = 0.25, kMaxSpeed = 8.0;
 
 struct SdlDeleter {
@@ -97,7 +101,7 @@ struct LoopState {
   bool step_once = false;
   bool restart = false;
   bool screenshot = false;
-  double zoom = 12.0;
+  double zoom = kDefaultZoom;
   double speed = 1.0;
   DrawOptions draw;
 };
@@ -200,6 +204,14 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     return 2;
   }
   SdlCanvas canvas(renderer);
+  std::string sprite_error;
+  if (const auto dir = findSpriteDir(&sprite_error)) sprite_error = canvas.loadImages(*dir);
+  if (!sprite_error.empty())
+    std::fprintf(stderr, "%s; drawing with vectors\n", sprite_error.c_str());
+  int vw = 0, vh = 0;
+  SDL_GetRendererOutputSize(renderer, &vw, &vh);
+  Effects effects(session.world());
+  CameraRig rig(session.world(), {vw, vh});
   const double hz = options.session.settings.hz;
   FixedStepClock clock(1.0 / hz, kMaxStepsPerFrame);
   InputLatch latch;
@@ -223,6 +235,8 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     if (s.restart) {
       s.restart = false;
       session.restart();
+      effects.reset(session.world());
+      rig.reset(session.world());
       latch.releaseAll();
       over_reported = false;
       note = "restarted";
@@ -232,6 +246,8 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     s.step_once = false;
     for (int i = 0; i < steps; ++i) {
       session.step(latch.sample());
+      effects.observe(session.world());
+      rig.step(session.world());
       if (options.progress) printFrame(session.world().frame());
     }
     if (!record_error_reported && !session.recordError().empty()) {
@@ -259,7 +275,11 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     s.draw.fps = fps;
     s.draw.playback_speed = session.playingBack() || s.speed != 1.0 ? s.speed : 0.0;
     s.draw.status = statusLine(session, options, note);
-    drawFrame(canvas, session.world(), followCamera(box, s.zoom, {w, h}), box, s.draw);
+    s.draw.effects = &effects;
+    s.draw.sprites = true;
+    const Camera camera =
+        rig.camera({w, h}, frozen ? 1.0 : clock.alpha(), s.zoom / kDefaultZoom, effects.shake());
+    drawFrame(canvas, session.world(), camera, box, s.draw);
     if (s.screenshot) {
       s.screenshot = false;
       note = saveScreenshot(renderer);

@@ -16,13 +16,15 @@ struct RenderSettings {
   int height = 720;                       ///< Pixels.
   double pixels_per_metre = 12.0;         ///< Zoom of the follow camera.
   std::optional<Eigen::Vector2d> center;  ///< World point at the middle (default: the player).
-  DrawOptions options;                    ///< HUD, overlay and status line.
-  Palette palette;                        ///< Colours.
+  std::optional<Camera> camera;  ///< The whole camera (e.g. from a CameraRig); overrides the above.
+  DrawOptions options;           ///< HUD, overlay and status line.
+  Palette palette;               ///< Colours.
 };
 
-/// Draws `world` (camera on the player unless `center` is set) with the same code as the window
-/// into a software surface and writes it to `out` as PNG, atomically. Needs no display: only
-/// SDL2_ttf is initialised. Returns an empty string on success, else one line saying what went
+/// Draws `world` (camera on the player unless `center` or `camera` is set) with the same code as
+/// the window into a software surface and writes it to `out` as PNG, atomically. With
+/// `options.sprites` the sprites are loaded first (findSpriteDir). Needs no display: only SDL2_ttf
+/// is initialised. Returns an empty string on success, else one line saying what went
 /// wrong.
 [[nodiscard]] std::string renderPng(const World& world, const RenderSettings& settings,
                                     const std::string& out);

@@ -1,6 +1,9 @@
 #include "render/draw_world.hpp"
 
+#include <cstdint>
+
 #include "render/debug_overlay.hpp"
+#include "render/effects_layer.hpp"
 #include "render/hud.hpp"
 #include "render/world_layer.hpp"
 
@@ -9,11 +12,23 @@ namespace cardemo {
 void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
                const DrawOptions& options, const Palette& palette) {
   canvas.clear(world.scene().bounds ? palette.outside : palette.ground);
-  drawWorldLayer(canvas, world, camera, player_box, palette);
+  drawWorldLayer(canvas, world, camera, player_box, options, palette);
   if (options.debug_overlay) drawDebugOverlay(canvas, world, camera);
+  if (options.effects != nullptr) drawDamageNumbers(canvas, camera, *options.effects, palette);
   drawHud(canvas, world, options);
+  if (options.effects != nullptr) drawHealthPulse(canvas, world, *options.effects);
   if (world.gameOver()) drawGameOver(canvas, world);
   if (options.help) drawHelp(canvas);
+}
+
+Rgba parkedColor(const std::string& id, const Palette& palette) {
+  // FNV-1a, 32 bits (Fowler, Noll, Vo): stable across runs, platforms and compilers.
+  std::uint32_t h = 2166136261u;
+  for (const char c : id) {
+    h ^= static_cast<std::uint8_t>(c);
+    h *= 16777619u;
+  }
+  return palette.car_colors[h % palette.car_colors.size()];
 }
 
 Camera followCamera(const Obb2& player_box, double pixels_per_metre,

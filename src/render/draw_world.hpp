@@ -2,6 +2,7 @@
 /// Draws a World through a Canvas: ground grid, walls, obstacles, parked cars, the player, the HUD
 /// and the debug overlay. The same code draws the window and the headless PNGs.
 
+#include <array>
 #include <string>
 
 #include "geometry/obb2.hpp"
@@ -10,6 +11,8 @@
 #include "sim/world.hpp"
 
 namespace cardemo {
+
+class Effects;
 
 /// What to draw besides the world itself.
 struct DrawOptions {
@@ -25,6 +28,10 @@ struct DrawOptions {
   double playback_speed = 0.0;
   /// Extra one-line status (e.g. "recording to drive.replay").
   std::string status;
+  /// Hit feedback, tyre marks, brake lights and dents to draw (none when null).
+  const Effects* effects = nullptr;
+  /// Draw cars, wheels and ground with the canvas's sprites when it has them (else vectors).
+  bool sprites = false;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).
@@ -32,12 +39,39 @@ struct Palette {
   Rgba ground{38, 41, 46};       ///< Asphalt.
   Rgba grid{52, 56, 62};         ///< Ground grid lines.
   Rgba wall{200, 200, 210};      ///< Walls from `bounds`.
-  Rgba parked{70, 110, 170};     ///< Parked cars.
   Rgba obstacle{150, 140, 120};  ///< Convex obstacles.
   Rgba player{230, 60, 50};      ///< The player's car.
   Rgba windscreen{20, 24, 30};   ///< Windscreens (show a car's heading).
   Rgba outside{22, 24, 27};      ///< Ground beyond the walls (when the scene has bounds).
+  /// Parked-car colours; each car gets one, chosen from its id (parkedColor()).
+  std::array<Rgba, 10> car_colors{{{70, 110, 170},
+                                   {200, 200, 205},
+                                   {40, 44, 52},
+                                   {150, 30, 40},
+                                   {220, 170, 50},
+                                   {60, 130, 90},
+                                   {120, 125, 135},
+                                   {235, 235, 230},
+                                   {90, 60, 130},
+                                   {45, 85, 110}}};
+  Rgba rear_window{28, 32, 40};       ///< Rear windows.
+  Rgba roof_line{0, 0, 0, 70};        ///< Roof panel outline (over the body colour).
+  Rgba tyre{18, 18, 20};              ///< Tyres.
+  Rgba headlight{250, 240, 200};      ///< Headlamps.
+  Rgba tail_light{120, 20, 24};       ///< Rear lamps, unlit.
+  Rgba brake_light{255, 40, 40};      ///< Rear lamps while braking.
+  Rgba reverse_light{245, 245, 255};  ///< Reversing lamps.
+  Rgba bay_line{215, 215, 200, 150};  ///< Painted parking-bay lines.
+  Rgba kerb_a{225, 200, 60};          ///< Kerb blocks along the walls (alternating).
+  Rgba kerb_b{40, 40, 44};            ///< Kerb blocks along the walls (alternating).
+  Rgba asphalt_dark{35, 38, 43};      ///< Darker asphalt patches.
+  Rgba asphalt_light{41, 44, 49};     ///< Lighter asphalt patches.
+  Rgba skid{14, 14, 16};              ///< Tyre marks (alpha set per mark).
+  Rgba damage_text{255, 96, 72};      ///< Floating damage numbers.
 };
+
+/// The colour of parked car `id`: the same id gets the same colour on every run (FNV-1a of it).
+[[nodiscard]] Rgba parkedColor(const std::string& id, const Palette& palette = {});
 
 /// Draws the whole frame: world (with the player drawn at `player_box`, which may be interpolated
 /// between two steps), then the HUD, help and overlay as `options` asks.

@@ -98,6 +98,12 @@ void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen:
   canvas.text(at, label, h, kText);
 }
 
+HealthBarRect healthBarRect(const Eigen::Vector2i& viewport) {
+  const float s = hudScale(viewport);
+  const float pad = 10.0f * s;
+  return {{12.0f * s + pad, 12.0f * s + pad}, {240.0f * s, 22.0f * s}};
+}
+
 void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
@@ -111,16 +117,16 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   if (options.playback_speed > 0.0) {
     rows.push_back({"Replay speed", format("%gx", options.playback_speed), kDim});
   }
-  const Eigen::Vector2f bar_size{240.0f * s, 22.0f * s};
-  const Eigen::Vector2f origin{12.0f * s, 12.0f * s};
+  const HealthBarRect bar = healthBarRect(vp);
+  const Eigen::Vector2f bar_size = bar.size;
+  const Eigen::Vector2f origin = bar.top_left - Eigen::Vector2f{pad, pad};
   // One panel behind both the bar and the table.
   const float row = static_cast<float>(h) * 1.3f;
   fillRect(canvas, origin,
            {bar_size.x() + 2.0f * pad,
             bar_size.y() + pad * 2.5f + row * static_cast<float>(rows.size())},
            kPanel);
-  drawHealthBar(canvas, origin + Eigen::Vector2f{pad, pad}, bar_size, world.health(),
-                world.scene().player.health);
+  drawHealthBar(canvas, bar.top_left, bar_size, world.health(), world.scene().player.health);
   drawTable(canvas, origin + Eigen::Vector2f{pad, pad * 1.8f + bar_size.y()}, bar_size.x(), rows,
             h);
 

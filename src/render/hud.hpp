@@ -17,6 +17,15 @@ namespace cardemo {
 /// Size factor for HUD text and panels at a viewport height (1 at 720 px).
 [[nodiscard]] float hudScale(const Eigen::Vector2i& viewport);
 
+/// Where the HUD draws the health bar in a viewport, pixels.
+struct HealthBarRect {
+  Eigen::Vector2f top_left;  ///< Top-left corner.
+  Eigen::Vector2f size;      ///< Width and height.
+};
+
+/// The health bar's place in the HUD panel at the top left (drawHud draws it there).
+[[nodiscard]] HealthBarRect healthBarRect(const Eigen::Vector2i& viewport);
+
 /// The health bar: a dark trough of `size`, filled from the left in proportion to health, with
 /// the number written on it.
 void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,

@@ -1,9 +1,14 @@
 #include "render/world_layer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <variant>
 
+#include "render/car_art.hpp"
+#include "render/effects_layer.hpp"
+#include "render/ground_layer.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
@@ -15,7 +20,6 @@ constexpr double kMinGridSpacingPx = 6.0;
 constexpr double kMaxGridLines = 4000.0;
 // Past 2^52 consecutive integers are no longer representable, so k += step would stall.
 constexpr double kMaxGridCoordinate = 1e15;
-constexpr double kWallThicknessM = 0.6;
 
 void gridLines(Canvas& canvas, const Camera& camera, const Aabb2& view, double step, float px,
                const Rgba& color, bool skip_major) {
@@ -41,23 +45,6 @@ void gridLines(Canvas& canvas, const Camera& camera, const Aabb2& view, double s
         canvas.line({lo_px.x(), s.y()}, {hi_px.x(), s.y()}, px, color);
       }
     }
-  }
-}
-
-void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& b, const Palette& palette) {
-  const double t = kWallThicknessM;
-  const std::array<Aabb2, 4> walls{
-      Aabb2{{b.min.x() - t, b.min.y() - t}, {b.max.x() + t, b.min.y()}},
-      Aabb2{{b.min.x() - t, b.max.y()}, {b.max.x() + t, b.max.y() + t}},
-      Aabb2{{b.min.x() - t, b.min.y()}, {b.min.x(), b.max.y()}},
-      Aabb2{{b.max.x(), b.min.y()}, {b.max.x() + t, b.max.y()}}};
-  const Aabb2 view = visibleWorld(camera);
-  for (const Aabb2& w : walls) {
-    if (!w.overlaps(view)) continue;
-    const std::array<Eigen::Vector2f, 4> quad{
-        camera.toScreen(w.min), camera.toScreen({w.max.x(), w.min.y()}), camera.toScreen(w.max),
-        camera.toScreen({w.min.x(), w.max.y()})};
-    canvas.fillConvex(quad, palette.wall);
   }
 }
 
@@ -92,35 +79,53 @@ void drawGroundGrid(Canvas& canvas, const Camera& camera, const Palette& palette
   }
 }
 
-void drawCar(Canvas& canvas, const Camera& camera, const Obb2& box, const Rgba& body,
-             const Palette& palette) {
-  const std::array<Eigen::Vector2f, 4> corners = projectObb(camera, box);
-  canvas.fillConvex(corners, body);
-  outline(canvas, corners, 1.5f, shade(body, 0.6));
-  canvas.fillConvex(windscreenQuad(camera, box), palette.windscreen);
-}
-
 void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
-                    const Obb2& player_box, const Palette& palette) {
+                    const Obb2& player_box, const DrawOptions& options, const Palette& palette) {
   const Scene& scene = world.scene();
   const Aabb2 view = visibleWorld(camera);
-  if (scene.bounds) {
-    // The lot itself in the ground colour; drawFrame cleared the screen to `outside`.
-    const Aabb2& b = *scene.bounds;
-    const std::array<Eigen::Vector2f, 4> lot{
-        camera.toScreen(b.min), camera.toScreen({b.max.x(), b.min.y()}), camera.toScreen(b.max),
-        camera.toScreen({b.min.x(), b.max.y()})};
-    canvas.fillConvex(lot, palette.ground);
+  const Effects* fx = options.effects;
+  drawGround(canvas, camera, scene, palette, options.sprites);
+  if (options.debug_overlay) {
+    drawGroundGrid(canvas, camera, palette, scene.bounds ? &*scene.bounds : nullptr);
   }
-  drawGroundGrid(canvas, camera, palette, scene.bounds ? &*scene.bounds : nullptr);
+  drawBayLines(canvas, camera, scene, palette);
   if (scene.bounds) drawWalls(canvas, camera, *scene.bounds, palette);
+  if (fx != nullptr) drawSkidMarks(canvas, camera, *fx, palette);
   for (const Obstacle& o : scene.obstacles) {
     if (o.polygon.aabb().overlaps(view)) drawObstacle(canvas, camera, o.polygon, palette);
   }
-  for (const ParkedCar& car : scene.parked) {
-    if (car.box.aabb().overlaps(view)) drawCar(canvas, camera, car.box, palette.parked, palette);
+  const std::span<const Dent> dents =
+      fx != nullptr ? std::span<const Dent>(fx->dents()) : std::span<const Dent>();
+  const double wheelbase = world.settings().car.wheelbase;
+  for (std::size_t i = 0; i < scene.parked.size(); ++i) {
+    const ParkedCar& car = scene.parked[i];
+    if (!car.box.aabb().overlaps(view)) continue;
+    CarLook look;
+    look.body = parkedColor(car.id, palette);
+    look.wheelbase = wheelbase;
+    look.dents = dents;
+    look.owner = static_cast<std::uint32_t>(i);
+    if (fx != nullptr) look.flash = fx->colliderFlash(static_cast<std::uint32_t>(i));
+    drawCarArt(canvas, camera, car.box, look, palette, options.sprites);
   }
-  drawCar(canvas, camera, player_box, palette.player, palette);
+  CarLook player;
+  player.body = palette.player;
+  player.steer = world.car().steer;
+  player.wheelbase = wheelbase;
+  player.lit = true;
+  player.dents = dents;
+  const int max_health = scene.player.health;
+  player.damage = max_health > 0 ? 1.0 - std::clamp(world.health(), 0, max_health) /
+                                             static_cast<double>(max_health)
+                                 : 0.0;
+  if (fx != nullptr) {
+    player.braking = fx->braking();
+    player.reversing = fx->reversing();
+    player.flash = fx->playerFlash();
+  } else {
+    player.reversing = world.car().speed < -0.05;
+  }
+  drawCarArt(canvas, camera, player_box, player, palette, options.sprites);
 }
 
 }  // namespace cardemo

@@ -1,5 +1,6 @@
 #pragma once
-/// The world-space layer of a frame: ground grid, walls, obstacles, parked cars and the player.
+/// The world-space layer of a frame: ground, bay lines, walls, tyre marks, obstacles, parked cars
+/// and the player (the metre grid only with the debug overlay).
 
 #include "geometry/obb2.hpp"
 #include "render/camera.hpp"
@@ -9,17 +10,17 @@
 
 namespace cardemo {
 
+/// Thickness of the walls drawn outside a scene's `bounds`, metres.
+inline constexpr double kWallThicknessM = 0.6;
+
 /// Grid lines every metre (minor) and every 10 m (major), only those in view, placed relative to
 /// the camera so they stay exact far from the origin; only inside `clip` (world) when given.
 void drawGroundGrid(Canvas& canvas, const Camera& camera, const Palette& palette,
                     const Aabb2* clip = nullptr);
 
-/// A car body with its windscreen near the front (showing the heading).
-void drawCar(Canvas& canvas, const Camera& camera, const Obb2& box, const Rgba& body,
-             const Palette& palette);
-
-/// Walls, obstacles and parked cars in view, then the player at `player_box`.
+/// Ground, bay lines, walls, tyre marks, obstacles and parked cars in view, then the player at
+/// `player_box`; hit flashes, dents and lamps from `options.effects` when set.
 void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
-                    const Obb2& player_box, const Palette& palette);
+                    const Obb2& player_box, const DrawOptions& options, const Palette& palette);
 
 }  // namespace cardemo

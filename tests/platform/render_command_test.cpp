@@ -86,7 +86,7 @@ bool samePixels(const SDL_Surface& a, const SDL_Surface& b) {
   return true;
 }
 
-TEST(RenderCommand, SceneFrameZeroHasThePlayerAtTheCentreAndParkedCarsInTheirColour) {
+TEST(RenderCommand, SceneFrameZeroHasThePlayerAtTheCentreAndParkedCarsInTheirColours) {
   const fs::path out = scratch("lot.png");
   const CommandResult run = render("'" + kLot + "' --out '" + out.string() + "'");
   ASSERT_EQ(run.status, 0) << run.err;
@@ -109,7 +109,7 @@ TEST(RenderCommand, SceneFrameZeroHasThePlayerAtTheCentreAndParkedCarsInTheirCol
     const Eigen::Vector2f s = camera.toScreen(car.box.center);
     if (s.x() < 320 || s.x() > 1100 || s.y() < 160 || s.y() > 640) continue;
     const Rgba c = pixel(*img, static_cast<int>(s.x()), static_cast<int>(s.y()));
-    EXPECT_TRUE(near(c, palette.parked)) << car.id << " " << str(c);
+    EXPECT_TRUE(near(c, parkedColor(car.id))) << car.id << " " << str(c);
     ++checked;
   }
   EXPECT_GE(checked, 5);

@@ -1,0 +1,171 @@
+#include "render/ground_layer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "render/shapes.hpp"
+#include "render/world_layer.hpp"
+
+namespace cardemo {
+namespace {
+
+constexpr double kPatchCellM = 3.0;
+constexpr double kTileM = 6.0;
+constexpr double kMinTilePx = 40.0;
+constexpr double kKerbBlockM = 1.5;
+constexpr double kBayHalfWidthM = 1.3;
+constexpr double kLineWidthM = 0.12;
+// Beyond this many cells or tiles in view the texture is left out (a guard for extreme zooms).
+constexpr double kMaxCells = 6000.0;
+
+std::uint64_t cellHash(std::int64_t x, std::int64_t y) {
+  // splitmix64 (Steele, Lea, Flood 2014) over both coordinates.
+  std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ull ^
+                    (static_cast<std::uint64_t>(y) + 0x632be59bd9b4e019ull);
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+
+std::array<Eigen::Vector2f, 4> rect(const Camera& camera, const Aabb2& b) {
+  return {camera.toScreen(b.min), camera.toScreen({b.max.x(), b.min.y()}), camera.toScreen(b.max),
+          camera.toScreen({b.min.x(), b.max.y()})};
+}
+
+// The part of the view the ground covers (the lot, or all of it without walls); false if none.
+bool groundArea(const Camera& camera, const Scene& scene, Aabb2& area) {
+  area = visibleWorld(camera);
+  if (!scene.bounds) return true;
+  if (!scene.bounds->overlaps(area)) return false;
+  area = {area.min.cwiseMax(scene.bounds->min), area.max.cwiseMin(scene.bounds->max)};
+  return true;
+}
+
+void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const Palette& palette) {
+  const Eigen::Vector2d lo = (area.min / kPatchCellM).array().floor();
+  const Eigen::Vector2d hi = (area.max / kPatchCellM).array().floor();
+  if (!((hi.x() - lo.x() + 1.0) * (hi.y() - lo.y() + 1.0) <= kMaxCells)) return;
+  if (camera.pixels_per_metre * kPatchCellM < 6.0) return;
+  for (auto cy = static_cast<std::int64_t>(lo.y()); cy <= static_cast<std::int64_t>(hi.y()); ++cy) {
+    for (auto cx = static_cast<std::int64_t>(lo.x()); cx <= static_cast<std::int64_t>(hi.x());
+         ++cx) {
+      const std::uint64_t h = cellHash(cx, cy);
+      if (h % 4 != 0) continue;  // one cell in four gets a patch
+      const double u = static_cast<double>((h >> 8) & 0xff) / 255.0;
+      const double v = static_cast<double>((h >> 16) & 0xff) / 255.0;
+      const double w = 0.8 + 1.8 * static_cast<double>((h >> 24) & 0xff) / 255.0;
+      const double t = 0.6 + 1.4 * static_cast<double>((h >> 32) & 0xff) / 255.0;
+      const Eigen::Vector2d c{(static_cast<double>(cx) + u) * kPatchCellM,
+                              (static_cast<double>(cy) + v) * kPatchCellM};
+      const double ang = static_cast<double>((h >> 40) & 0xff) / 255.0 * 3.14159265358979323846;
+      const Obb2 patch{c, {std::cos(ang), std::sin(ang)}, {0.5 * w, 0.5 * t}};
+      if (!patch.aabb().overlaps(area)) continue;
+      canvas.fillConvex(projectObb(camera, patch),
+                        (h >> 48) % 2 == 0 ? palette.asphalt_dark : palette.asphalt_light);
+    }
+  }
+}
+
+void drawTiles(Canvas& canvas, const Camera& camera, const Scene& scene, const Aabb2& area) {
+  double tile = kTileM;
+  while (tile * camera.pixels_per_metre < kMinTilePx) tile *= 2.0;
+  // Tiles start at the lot's corner (or the origin), so they stay put as the camera moves.
+  const Eigen::Vector2d origin = scene.bounds ? scene.bounds->min : Eigen::Vector2d::Zero();
+  const Eigen::Vector2d lo = ((area.min - origin) / tile).array().floor();
+  const Eigen::Vector2d hi = ((area.max - origin) / tile).array().floor();
+  if (!((hi.x() - lo.x() + 1.0) * (hi.y() - lo.y() + 1.0) <= kMaxCells)) return;
+  // One pixel of overlap hides the seams between tiles.
+  const auto px = static_cast<float>(tile * camera.pixels_per_metre + 1.0);
+  for (double ty = lo.y(); ty <= hi.y(); ty += 1.0) {
+    for (double tx = lo.x(); tx <= hi.x(); tx += 1.0) {
+      const Eigen::Vector2d c = origin + Eigen::Vector2d{tx + 0.5, ty + 0.5} * tile;
+      canvas.image(ImageId::kGround, camera.toScreen(c), 0.0f, {px, px}, {255, 255, 255, 255});
+    }
+  }
+}
+
+}  // namespace
+
+void drawGround(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette,
+                bool sprites) {
+  if (scene.bounds) canvas.fillConvex(rect(camera, *scene.bounds), palette.ground);
+  Aabb2 area;
+  if (!groundArea(camera, scene, area)) return;
+  if (sprites && canvas.hasImage(ImageId::kGround)) {
+    drawTiles(canvas, camera, scene, area);
+    if (scene.bounds) {
+      // Tiles overhang the lot's far sides: cover the overhang with the ground outside.
+      const Aabb2 view = visibleWorld(camera);
+      const Aabb2& b = *scene.bounds;
+      const double far = kTileM * 64.0;
+      for (const Aabb2& o :
+           {Aabb2{{b.max.x(), b.min.y() - far}, {b.max.x() + far, b.max.y() + far}},
+            Aabb2{{b.min.x() - far, b.max.y()}, {b.max.x(), b.max.y() + far}}}) {
+        if (o.overlaps(view)) canvas.fillConvex(rect(camera, o), palette.outside);
+      }
+    }
+  } else {
+    drawPatches(canvas, camera, area, palette);
+  }
+}
+
+void drawBayLines(Canvas& canvas, const Camera& camera, const Scene& scene,
+                  const Palette& palette) {
+  const Aabb2 view = visibleWorld(camera);
+  const float w = std::max(1.0f, static_cast<float>(kLineWidthM * camera.pixels_per_metre));
+  for (const ParkedCar& car : scene.parked) {
+    const Obb2& b = car.box;
+    if (!b.aabb().overlaps(view)) continue;
+    const double hy = std::max(kBayHalfWidthM, b.half.y() + 0.35);
+    const double hx = b.half.x() + 0.45;
+    auto at = [&b, &camera](double x, double y) {
+      return camera.toScreen(b.center + b.axis * x + b.perp() * y);
+    };
+    canvas.line(at(-hx, hy), at(hx, hy), w, palette.bay_line);
+    canvas.line(at(-hx, -hy), at(hx, -hy), w, palette.bay_line);
+    canvas.line(at(-hx, -hy), at(-hx, hy), w, palette.bay_line);
+  }
+}
+
+void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& b, const Palette& palette) {
+  const double t = kWallThicknessM;
+  const std::array<Aabb2, 4> walls{
+      Aabb2{{b.min.x() - t, b.min.y() - t}, {b.max.x() + t, b.min.y()}},
+      Aabb2{{b.min.x() - t, b.max.y()}, {b.max.x() + t, b.max.y() + t}},
+      Aabb2{{b.min.x() - t, b.min.y()}, {b.min.x(), b.max.y()}},
+      Aabb2{{b.max.x(), b.min.y()}, {b.max.x() + t, b.max.y()}}};
+  const Aabb2 view = visibleWorld(camera);
+  for (const Aabb2& w : walls) {
+    if (w.overlaps(view)) canvas.fillConvex(rect(camera, w), palette.wall);
+  }
+  if (camera.pixels_per_metre * kKerbBlockM < 6.0) return;
+  // Kerb blocks on the inner half of each wall, counted from the lot's corner so they stay put.
+  const double k = 0.5 * t;
+  for (int side = 0; side < 4; ++side) {
+    const bool horizontal = side < 2;
+    const int axis = horizontal ? 0 : 1;
+    const double lo = std::max(b.min[axis], view.min[axis]);
+    const double hi = std::min(b.max[axis], view.max[axis]);
+    if (!(lo < hi)) continue;
+    const double y0 = side == 0 ? b.min.y() - k : side == 1 ? b.max.y() : 0.0;
+    const double x0 = side == 2 ? b.min.x() - k : side == 3 ? b.max.x() : 0.0;
+    const Aabb2 band = horizontal ? Aabb2{{lo, y0}, {hi, y0 + k}} : Aabb2{{x0, lo}, {x0 + k, hi}};
+    if (!band.overlaps(view)) continue;
+    const auto first = static_cast<std::int64_t>(std::floor((lo - b.min[axis]) / kKerbBlockM));
+    const auto last = static_cast<std::int64_t>(std::floor((hi - b.min[axis]) / kKerbBlockM));
+    if (last - first > 4000) continue;
+    for (std::int64_t i = first; i <= last; ++i) {
+      const double s = std::max(lo, b.min[axis] + static_cast<double>(i) * kKerbBlockM);
+      const double e = std::min(hi, b.min[axis] + static_cast<double>(i + 1) * kKerbBlockM);
+      if (!(s < e)) continue;
+      Aabb2 block = band;
+      block.min[axis] = s;
+      block.max[axis] = e;
+      canvas.fillConvex(rect(camera, block), i % 2 == 0 ? palette.kerb_a : palette.kerb_b);
+    }
+  }
+}
+
+}  // namespace cardemo

@@ -1,0 +1,25 @@
+#pragma once
+/// The ground under the cars: asphalt (sprite tiles or vector patches), painted parking-bay lines,
+/// the walls with their kerb blocks.
+
+#include "render/camera.hpp"
+#include "render/canvas.hpp"
+#include "render/draw_world.hpp"
+#include "sim/scene.hpp"
+
+namespace cardemo {
+
+/// Asphalt over the lot (or the whole view without walls): tiles of the ground sprite when
+/// `sprites` and the canvas has it, else the ground colour with darker and lighter patches placed
+/// by a hash of world cells (so they stay put as the camera moves).
+void drawGround(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette,
+                bool sprites);
+
+/// A painted bay around each parked car in view: a line along each long side, 2.6 m apart (or
+/// wider for a wide car), and one across the end behind it.
+void drawBayLines(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette);
+
+/// The four walls outside `bounds`, with alternating kerb blocks along their inner edge.
+void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& bounds, const Palette& palette);
+
+}  // namespace cardemo
