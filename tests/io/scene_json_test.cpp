@@ -435,7 +435,7 @@ std::string withGoal(std::string_view goal_lines) {
   return text.substr(0, end) + "],\n" + std::string(goal_lines) + "\n}\n";
 }
 
-// Starts on line 23.
+// Starts on line 22.
 constexpr std::string_view kGoal = R"(  "goal": {
     "bay": {"x": 20, "y": -5, "heading_deg": 90, "length": 5.5, "width": 2.6},
     "position_tolerance": 0.4,
@@ -505,13 +505,13 @@ std::string goalWith(std::string_view from, std::string_view to) {
 }
 
 TEST(SceneJsonGoalErrors, UnknownKeyInGoal) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"max_speed\"", "\"max_sped\"")), 28,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"max_speed\"", "\"max_sped\"")), 27,
                       "unknown key \"max_sped\" in goal"));
 }
 
 TEST(SceneJsonGoalErrors, UnknownKeyInBay) {
   EXPECT_TRUE(
-      failsAt(parse(goalWith("\"x\": 20", "\"xx\": 20")), 24, "unknown key \"xx\" in goal.bay"));
+      failsAt(parse(goalWith("\"x\": 20", "\"xx\": 20")), 23, "unknown key \"xx\" in goal.bay"));
 }
 
 TEST(SceneJsonGoalErrors, MissingBay) {
@@ -519,49 +519,49 @@ TEST(SceneJsonGoalErrors, MissingBay) {
       parse(goalWith("\"bay\": {\"x\": 20, \"y\": -5, \"heading_deg\": 90, \"length\": 5.5, "
                      "\"width\": 2.6},",
                      "")),
-      23, "goal: missing \"bay\""));
+      22, "goal: missing \"bay\""));
 }
 
 TEST(SceneJsonGoalErrors, BayWidthZero) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 2.6", "\"width\": 0")), 24,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 2.6", "\"width\": 0")), 23,
                       "goal.bay.width: must be finite and > 0"));
 }
 
 TEST(SceneJsonGoalErrors, ToleranceZeroOrNegative) {
   EXPECT_TRUE(
-      failsAt(parse(goalWith("0.4", "0")), 25, "goal.position_tolerance: must be finite, > 0"));
+      failsAt(parse(goalWith("0.4", "0")), 24, "goal.position_tolerance: must be finite, > 0"));
   EXPECT_TRUE(
-      failsAt(parse(goalWith("0.4", "-1")), 25, "goal.position_tolerance: must be finite, > 0"));
+      failsAt(parse(goalWith("0.4", "-1")), 24, "goal.position_tolerance: must be finite, > 0"));
 }
 
 TEST(SceneJsonGoalErrors, HeadingToleranceAbove180) {
   EXPECT_TRUE(
-      failsAt(parse(goalWith("\"heading_tolerance_deg\": 6", "\"heading_tolerance_deg\": 181")), 26,
+      failsAt(parse(goalWith("\"heading_tolerance_deg\": 6", "\"heading_tolerance_deg\": 181")), 25,
               "goal.heading_tolerance_deg: must be finite, > 0 and at most 180"));
 }
 
 TEST(SceneJsonGoalErrors, EitherDirectionMustBeBool) {
   EXPECT_TRUE(
-      failsAt(parse(goalWith("true", "1")), 27, "goal.either_direction: expected a boolean"));
+      failsAt(parse(goalWith("true", "1")), 26, "goal.either_direction: expected a boolean"));
 }
 
 TEST(SceneJsonGoalErrors, MaxSpeedAndTimesAreValidated) {
   EXPECT_TRUE(
-      failsAt(parse(goalWith("0.25", "\"slow\"")), 28, "goal.max_speed: expected a number"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 0")), 29,
+      failsAt(parse(goalWith("0.25", "\"slow\"")), 27, "goal.max_speed: expected a number"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 0")), 28,
                       "goal.par_time: must be finite, > 0"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"time_limit\": 60", "\"time_limit\": 1e6")), 30,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"time_limit\": 60", "\"time_limit\": 1e6")), 29,
                       "goal.time_limit: must be finite, > 0 and at most 100000 s"));
 }
 
 TEST(SceneJsonGoalErrors, ParTimeAboveTimeLimit) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 61")), 29,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 61")), 28,
                       "goal.par_time: must not exceed goal.time_limit"));
 }
 
 TEST(SceneJsonLevelErrors, OrderMustBeAPositiveInteger) {
   for (const char* bad : {"0", "1.5", "-3", "10001"}) {
-    EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2", std::string("\"order\": ") + bad)), 32,
+    EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2", std::string("\"order\": ") + bad)), 31,
                         "level.order: must be an integer from 1 to 10000"))
         << bad;
   }
@@ -569,23 +569,23 @@ TEST(SceneJsonLevelErrors, OrderMustBeAPositiveInteger) {
 
 TEST(SceneJsonLevelErrors, TitleMustBeShortPrintableText) {
   EXPECT_TRUE(
-      failsAt(parse(goalWith("\"Reverse bay\"", "\"\"")), 32, "level.title: must be 1 to 64"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"Reverse bay\"", "\"" + std::string(65, 'x') + "\"")), 32,
+      failsAt(parse(goalWith("\"Reverse bay\"", "\"\"")), 31, "level.title: must be 1 to 64"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"Reverse bay\"", "\"" + std::string(65, 'x') + "\"")), 31,
                       "level.title: must be 1 to 64"));
   EXPECT_TRUE(
-      failsAt(parse(goalWith("\"Reverse bay\"", "\"a\\tb\"")), 32, "level.title: must be 1 to 64"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2, ", "")), 32, "level: missing \"order\""));
+      failsAt(parse(goalWith("\"Reverse bay\"", "\"a\\tb\"")), 31, "level.title: must be 1 to 64"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2, ", "")), 31, "level: missing \"order\""));
 }
 
 TEST(SceneJsonMarkingErrors, UnknownTypeMissingPointAndDegenerate) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"arrow\"", "\"zebra\"")), 35,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"arrow\"", "\"zebra\"")), 34,
                       "markings[1].type: expected \"line\" or \"arrow\", found \"zebra\""));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"to\": [0, 3]", "\"to\": [0, 0]")), 35,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"to\": [0, 3]", "\"to\": [0, 0]")), 34,
                       "markings[1]: from and to must differ"));
-  EXPECT_TRUE(failsAt(parse(goalWith(", \"to\": [0, 3]", "")), 35, "markings[1]: missing \"to\""));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"width\": 11")), 34,
+  EXPECT_TRUE(failsAt(parse(goalWith(", \"to\": [0, 3]", "")), 34, "markings[1]: missing \"to\""));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"width\": 11")), 33,
                       "markings[0].width: must be finite, > 0 and at most 10 m"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"paint\": 1")), 34,
+  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"paint\": 1")), 33,
                       "unknown key \"paint\" in markings[0]"));
 }
 
