@@ -62,6 +62,8 @@ struct Palette {
   Rgba brake_light{255, 40, 40};      ///< Rear lamps while braking.
   Rgba reverse_light{245, 245, 255};  ///< Reversing lamps.
   Rgba bay_line{215, 215, 200, 150};  ///< Painted parking-bay lines.
+  Rgba paint{225, 225, 210, 200};     ///< Scene markings: lines and lane arrows.
+  Rgba goal_bay{90, 230, 120};        ///< The goal bay's frame and its P.
   Rgba kerb_a{225, 200, 60};          ///< Kerb blocks along the walls (alternating).
   Rgba kerb_b{40, 40, 44};            ///< Kerb blocks along the walls (alternating).
   Rgba asphalt_dark{35, 38, 43};      ///< Darker asphalt patches.

@@ -188,25 +188,25 @@ void Effects::trackMotion(const World& world) {
   // Rate at which |speed| fell over the last step; positive when slowing down.
   const double decel = (std::abs(last_speed_) - std::abs(v)) * hz;
   last_speed_ = v;
-  reversing_ = v < -0.05;
-  braking_ = !world.gameOver() && std::abs(v) > 0.05 && decel > settings_.brake_light_decel;
-  // The kinematic model never slides, so tyre marks stand for what a real car would do: a lateral
-  // acceleration v^2 tan(steer) / wheelbase beyond grip, or a hard stop.
+  reversing_ = world.reversing();
+  braking_ = world.braking();
+  // Marks where the simulation says the tyres slide (grip limit, slip, handbrake): the rear
+  // tyres; braking from speed, or a stop harder than the brakes give (an impact): all four.
   const double wheelbase = world.settings().car.wheelbase;
-  const double lateral = v * v * std::abs(std::tan(car.steer)) / wheelbase;
   const bool fast = std::abs(v) > settings_.mark_min_speed;
-  const bool sliding = fast && lateral > settings_.slide_lateral_accel;
-  const bool stopping = fast && decel > settings_.hard_brake_decel;
+  const bool sliding = world.sliding();
+  const bool stopping = fast && (decel > settings_.hard_brake_decel ||
+                                 (braking_ && std::abs(v) > settings_.brake_mark_speed));
   marking_ = sliding || stopping;
 
   const auto tyres = tyrePositions(world.carBox(), wheelbase);
-  const float strength =
-      static_cast<float>(std::clamp(std::max(lateral / (2.0 * settings_.slide_lateral_accel),
-                                             decel / (1.6 * settings_.hard_brake_decel)),
-                                    0.35, 1.0));
+  const float strength = static_cast<float>(std::clamp(
+      std::max(std::abs(world.slipSpeed()) / 2.0, decel / (1.6 * settings_.hard_brake_decel)), 0.35,
+      1.0));
   open_count_ = 0;
   for (std::size_t i = 0; i < tyres.size(); ++i) {
-    // Sliding marks come from the rear tyres; a hard stop marks all four.
+    // Sliding marks come from the rear tyres (they break away, or the handbrake locks them); a
+    // hard stop marks all four.
     const bool lay = stopping || (sliding && i >= 2);
     if (!lay) {
       if (laying_[i] && (tyres[i] - anchor_[i]).norm() > 1e-3) {

@@ -26,6 +26,7 @@ struct EffectsSettings {
   double slide_lateral_accel = 6.0;      ///< Lateral acceleration (m/s^2) where tyres slide.
   double hard_brake_decel = 5.0;         ///< Deceleration (m/s^2) that marks the road.
   double brake_light_decel = 2.5;        ///< Deceleration (m/s^2) that lights the brake lamps.
+  double brake_mark_speed = 8.0;         ///< Braking faster than this (m/s) marks all four tyres.
   double mark_min_speed = 1.5;           ///< Slower than this (m/s) leaves no mark.
 };
 
@@ -79,9 +80,9 @@ class Effects {
   /// Health before the last hit (the pulse shows the lost part).
   [[nodiscard]] int healthBeforeHit() const { return health_before_; }
 
-  /// True while the car is braking (decelerating harder than rolling explains).
+  /// True while the car is braking (World::braking at the last step).
   [[nodiscard]] bool braking() const { return braking_; }
-  /// True while the car rolls backwards.
+  /// True while the car rolls backwards (World::reversing).
   [[nodiscard]] bool reversing() const { return reversing_; }
   /// True while the tyres lay marks this frame.
   [[nodiscard]] bool marking() const { return marking_; }

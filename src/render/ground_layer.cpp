@@ -129,6 +129,39 @@ void drawBayLines(Canvas& canvas, const Camera& camera, const Scene& scene,
   }
 }
 
+void drawMarkings(Canvas& canvas, const Camera& camera, const Scene& scene,
+                  const Palette& palette) {
+  const Aabb2 view = visibleWorld(camera);
+  const double ppm = camera.pixels_per_metre;
+  for (const Marking& m : scene.markings) {
+    const Aabb2 b{m.from.cwiseMin(m.to).array() - 1.0, m.from.cwiseMax(m.to).array() + 1.0};
+    if (!b.overlaps(view)) continue;
+    const float w = std::max(1.0f, static_cast<float>(m.width * ppm));
+    if (m.kind == Marking::Kind::kLine) {
+      canvas.line(camera.toScreen(m.from), camera.toScreen(m.to), w, palette.paint);
+    } else {
+      const double len = (m.to - m.from).norm();
+      arrow(canvas, camera.toScreen(m.from), camera.toScreen(m.to), w,
+            static_cast<float>(std::min(1.2, 0.45 * len) * ppm), palette.paint);
+    }
+  }
+  if (!scene.goal) return;
+  const ParkingBay& bay = scene.goal->bay;
+  const Obb2 box = Obb2::fromDegrees(bay.center, bay.heading_deg, bay.length, bay.width);
+  if (!box.aabb().overlaps(view)) return;
+  const auto corners = projectObb(camera, box);
+  Rgba fill = palette.goal_bay;
+  fill.a = 45;
+  canvas.fillConvex(corners, fill);
+  outline(canvas, corners, std::max(2.0f, static_cast<float>(0.15 * ppm)), palette.goal_bay);
+  // A "P" painted in the bay, facing the way the car should park.
+  const int px = static_cast<int>(std::lround(std::min(bay.length, bay.width) * 0.55 * ppm));
+  if (px >= 8) {
+    const Eigen::Vector2f size = canvas.textSize("P", px);
+    canvas.text(camera.toScreen(bay.center) - 0.5f * size, "P", px, palette.goal_bay);
+  }
+}
+
 void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& b, const Palette& palette) {
   const double t = kWallThicknessM;
   const std::array<Aabb2, 4> walls{

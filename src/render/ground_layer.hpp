@@ -19,6 +19,10 @@ void drawGround(Canvas& canvas, const Camera& camera, const Scene& scene, const 
 /// wider for a wide car), and one across the end behind it.
 void drawBayLines(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette);
 
+/// The scene's painted lines and lane arrows, and its goal bay (a tinted box with a bright frame
+/// and a P in the middle).
+void drawMarkings(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette);
+
 /// The four walls outside `bounds`, with alternating kerb blocks along their inner edge.
 void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& bounds, const Palette& palette);
 

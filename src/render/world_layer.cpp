@@ -89,6 +89,7 @@ void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
     drawGroundGrid(canvas, camera, palette, scene.bounds ? &*scene.bounds : nullptr);
   }
   drawBayLines(canvas, camera, scene, palette);
+  drawMarkings(canvas, camera, scene, palette);
   if (scene.bounds) drawWalls(canvas, camera, *scene.bounds, palette);
   if (fx != nullptr) drawSkidMarks(canvas, camera, *fx, palette);
   for (const Obstacle& o : scene.obstacles) {
