@@ -142,6 +142,21 @@ TEST(SceneJson, BundledScenesParse) {
   }
 }
 
+TEST(SceneJson, BundledLevelsHaveAGoalAndAnOrder) {
+  int order = 0;
+  for (const char* name :
+       {"level-1-straight", "level-2-reverse", "level-3-parallel", "level-4-garage"}) {
+    const Parsed<Scene> p =
+        loadScene(std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/levels/" + name + ".json");
+    ASSERT_TRUE(p.ok()) << p.error().toString();
+    ASSERT_TRUE(p.value().goal.has_value()) << name;
+    ASSERT_TRUE(p.value().level.has_value()) << name;
+    EXPECT_EQ(p.value().level->order, ++order) << name;
+    EXPECT_FALSE(p.value().markings.empty()) << name;
+    EXPECT_FALSE(p.value().obstacles.empty()) << name;
+  }
+}
+
 // --- malformed input, one class per test ---
 
 TEST(SceneJsonErrors, EmptyFile) {
