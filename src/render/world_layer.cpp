@@ -88,7 +88,8 @@ void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
   if (options.debug_overlay) {
     drawGroundGrid(canvas, camera, palette, scene.bounds ? &*scene.bounds : nullptr);
   }
-  drawBayLines(canvas, camera, scene, palette);
+  // A scene that paints its own lines gets no automatic bays.
+  if (scene.markings.empty()) drawBayLines(canvas, camera, scene, palette);
   drawMarkings(canvas, camera, scene, palette);
   if (scene.bounds) drawWalls(canvas, camera, *scene.bounds, palette);
   if (fx != nullptr) drawSkidMarks(canvas, camera, *fx, palette);
