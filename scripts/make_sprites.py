@@ -79,7 +79,7 @@ def car_shade(px, py):
         return (0, 0, 0, 0)
     # Paint: brightest along the spine, darker towards the sides (a curved body in flat light).
     side = abs(y) / hy
-    k = 0.95 - 0.16 * side ** 3
+    k = 0.9 - 0.18 * side ** 3
     col = (k, k, k)
     # Windscreen: a trapezoid from 0.27 m to 1.1 m ahead of the centre, narrowing to the front.
     if 0.27 < x < 1.1:
@@ -94,7 +94,7 @@ def car_shade(px, py):
         col = (0.18, 0.21, 0.26)
     # Roof: slightly lighter, with a thin panel seam.
     if -1.2 <= x <= 0.27 and abs(y) < 0.72:
-        col = (0.99, 0.99, 0.99)
+        col = (1.0 - 0.06 * (abs(y) / 0.72) ** 2,) * 3
         if abs(y) > 0.68 or abs(x + 1.2) < 0.03 or abs(x - 0.27) < 0.03:
             col = (0.72, 0.72, 0.72)
     # Bonnet creases.
@@ -125,9 +125,9 @@ def tyre_shade(px, py):
     d = rounded_box(x, y, TYRE_LENGTH / 2, TYRE_WIDTH / 2, 0.06)
     if d > 0:
         return (0, 0, 0, 0)
-    k = 0.09
-    if math.fmod(abs(x) + 0.5, 0.09) < 0.035:  # tread blocks across the tyre
-        k = 0.14
+    k = 0.1
+    if math.fmod(abs(x) + 0.5, 0.09) < 0.03 and abs(y) < 0.09:  # tread blocks across the tyre
+        k = 0.13
     if d > -0.02:
         k = 0.05
     return (k, k, k * 1.1, 1.0)

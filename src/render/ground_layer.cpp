@@ -11,7 +11,7 @@
 namespace cardemo {
 namespace {
 
-constexpr double kPatchCellM = 3.0;
+constexpr double kPatchCellM = 5.0;
 constexpr double kTileM = 6.0;
 constexpr double kMinTilePx = 40.0;
 constexpr double kKerbBlockM = 1.5;
@@ -48,22 +48,31 @@ void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const 
   const Eigen::Vector2d hi = (area.max / kPatchCellM).array().floor();
   if (!((hi.x() - lo.x() + 1.0) * (hi.y() - lo.y() + 1.0) <= kMaxCells)) return;
   if (camera.pixels_per_metre * kPatchCellM < 6.0) return;
+  constexpr int kSides = 8;
+  std::array<Eigen::Vector2f, kSides> pts;
   for (auto cy = static_cast<std::int64_t>(lo.y()); cy <= static_cast<std::int64_t>(hi.y()); ++cy) {
     for (auto cx = static_cast<std::int64_t>(lo.x()); cx <= static_cast<std::int64_t>(hi.x());
          ++cx) {
       const std::uint64_t h = cellHash(cx, cy);
-      if (h % 4 != 0) continue;  // one cell in four gets a patch
+      if (h % 3 != 0) continue;  // one cell in three gets a stain
       const double u = static_cast<double>((h >> 8) & 0xff) / 255.0;
       const double v = static_cast<double>((h >> 16) & 0xff) / 255.0;
-      const double w = 0.8 + 1.8 * static_cast<double>((h >> 24) & 0xff) / 255.0;
-      const double t = 0.6 + 1.4 * static_cast<double>((h >> 32) & 0xff) / 255.0;
+      const double rx = 0.8 + 1.6 * static_cast<double>((h >> 24) & 0xff) / 255.0;
+      const double ry = 0.5 + 1.0 * static_cast<double>((h >> 32) & 0xff) / 255.0;
       const Eigen::Vector2d c{(static_cast<double>(cx) + u) * kPatchCellM,
                               (static_cast<double>(cy) + v) * kPatchCellM};
+      if (!Aabb2{c.array() - rx, c.array() + rx}.overlaps(area)) continue;
       const double ang = static_cast<double>((h >> 40) & 0xff) / 255.0 * 3.14159265358979323846;
-      const Obb2 patch{c, {std::cos(ang), std::sin(ang)}, {0.5 * w, 0.5 * t}};
-      if (!patch.aabb().overlaps(area)) continue;
-      canvas.fillConvex(projectObb(camera, patch),
-                        (h >> 48) % 2 == 0 ? palette.asphalt_dark : palette.asphalt_light);
+      const Eigen::Vector2d ax{std::cos(ang), std::sin(ang)};
+      const Eigen::Vector2d ay{-ax.y(), ax.x()};
+      // An irregular octagon: a worn patch or an oil stain rather than a tile.
+      for (int i = 0; i < kSides; ++i) {
+        const double t = 2.0 * 3.14159265358979323846 * i / kSides;
+        const double k = 0.8 + 0.2 * static_cast<double>((h >> (i * 3)) & 7) / 7.0;
+        pts[static_cast<std::size_t>(i)] =
+            camera.toScreen(c + ax * (std::cos(t) * rx * k) + ay * (std::sin(t) * ry * k));
+      }
+      canvas.fillConvex(pts, (h >> 48) % 3 == 0 ? palette.asphalt_light : palette.asphalt_dark);
     }
   }
 }

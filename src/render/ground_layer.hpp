@@ -11,7 +11,7 @@ namespace cardemo {
 
 /// Asphalt over the lot (or the whole view without walls): tiles of the ground sprite when
 /// `sprites` and the canvas has it, else the ground colour with darker and lighter patches placed
-/// by a hash of world cells (so they stay put as the camera moves).
+/// by a hash of 5 m world cells (so they stay put as the camera moves).
 void drawGround(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette,
                 bool sprites);
 
