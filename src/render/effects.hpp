@@ -26,7 +26,7 @@ struct EffectsSettings {
   double slide_lateral_accel = 6.0;      ///< Lateral acceleration (m/s^2) where tyres slide.
   double hard_brake_decel = 5.0;         ///< Deceleration (m/s^2) that marks the road.
   double brake_light_decel = 2.5;        ///< Deceleration (m/s^2) that lights the brake lamps.
-  double brake_mark_speed = 8.0;         ///< Braking faster than this (m/s) marks all four tyres.
+  double brake_mark_speed = 5.0;         ///< Braking faster than this (m/s) marks all four tyres.
   double mark_min_speed = 1.5;           ///< Slower than this (m/s) leaves no mark.
 };
 

@@ -80,6 +80,65 @@ TEST(DrawWorld, ParkedCarsInViewDrawnInTheParkedColourWithWindscreens) {
   EXPECT_EQ(canvas.fillsOf(Palette{}.windscreen).size(), 3u);
 }
 
+TEST(DrawWorld, SpritesAreTintedImagesAndVectorsRemainTheFallback) {
+  Scene scene = sceneWith({parkedCar("A", 10, 0, 90), parkedCar("B", -12, 6, 0)}, 0.0, 0.0, 30.0);
+  scene.bounds = Aabb2{{-40.0, -30.0}, {40.0, 30.0}};
+  World world(std::move(scene));
+  Camera camera;
+  camera.viewport = kViewport;
+  camera.pixels_per_metre = 12.0;
+  DrawOptions options;
+  options.sprites = true;
+  RecordingCanvas canvas(kViewport);
+  canvas.with_images = true;
+  drawFrame(canvas, world, camera, world.carBox(), options);
+  const auto bodies = canvas.imagesOf(ImageId::kCarBody);
+  ASSERT_EQ(bodies.size(), 3u);
+  EXPECT_EQ(bodies[0].tint, parkedColor("A"));
+  EXPECT_EQ(bodies[1].tint, parkedColor("B"));
+  EXPECT_EQ(bodies[2].tint, Palette{}.player);
+  // The player's body: at its box, 4.5 x 1.8 m, turned 30 degrees (clockwise on screen: -30).
+  EXPECT_LT((bodies[2].center - camera.toScreen({0.0, 0.0})).norm(), 1e-3f);
+  EXPECT_NEAR(bodies[2].size.x(), 4.5f * 12.0f, 1e-3f);
+  EXPECT_NEAR(bodies[2].size.y(), 1.8f * 12.0f, 1e-3f);
+  EXPECT_NEAR(bodies[2].angle, -30.0f * 3.14159265f / 180.0f, 1e-5f);
+  EXPECT_EQ(canvas.imagesOf(ImageId::kWheel).size(), 12u);
+  EXPECT_FALSE(canvas.imagesOf(ImageId::kGround).empty());
+  EXPECT_TRUE(canvas.fillsOf(Palette{}.player).empty());  // no vector body under the sprite
+
+  // Asked for sprites but the canvas has none: the vector cars are drawn.
+  RecordingCanvas plain(kViewport);
+  drawFrame(plain, world, camera, world.carBox(), options);
+  EXPECT_TRUE(plain.images.empty());
+  EXPECT_EQ(plain.fillsOf(Palette{}.player).size(), 1u);
+}
+
+TEST(DrawWorld, FrontTyresTurnWithTheSteering) {
+  World world(sceneWith({}));
+  InputFrame left;
+  left.left = true;
+  for (int i = 0; i < 30; ++i) world.step(left);
+  ASSERT_GT(world.car().steer, 0.1);
+  Camera camera;
+  camera.viewport = kViewport;
+  camera.center = world.car().position;
+  camera.pixels_per_metre = 30.0;
+  const RecordingCanvas canvas = drawn(world, camera);
+  const auto tyres = canvas.fillsOf(Palette{}.tyre);
+  ASSERT_EQ(tyres.size(), 4u);
+  // Screen angle of each tyre's long side against the car's heading (screen y is flipped).
+  auto turn = [&](const RecordingCanvas::Fill& f) {
+    // Corners run counter-clockwise from local (+x, -y): corner 2 to corner 1 points along +x.
+    const Eigen::Vector2f d = f.points[1] - f.points[2];
+    const double tyre = std::atan2(-d.y(), d.x());
+    return std::remainder(tyre - world.car().heading, 3.14159265358979323846);
+  };
+  EXPECT_NEAR(turn(tyres[0]), world.car().steer, 1e-4);
+  EXPECT_NEAR(turn(tyres[1]), world.car().steer, 1e-4);
+  EXPECT_NEAR(turn(tyres[2]), 0.0, 1e-4);
+  EXPECT_NEAR(turn(tyres[3]), 0.0, 1e-4);
+}
+
 TEST(DrawWorld, WindscreenSitsTowardsTheHeading) {
   for (double heading : {0.0, 90.0, 180.0, -45.0}) {
     World world(sceneWith({}, 0.0, 0.0, heading));
