@@ -43,7 +43,8 @@ bool groundArea(const Camera& camera, const Scene& scene, Aabb2& area) {
   return true;
 }
 
-void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const Palette& palette) {
+void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const Aabb2* lot,
+                 const Palette& palette) {
   const Eigen::Vector2d lo = (area.min / kPatchCellM).array().floor();
   const Eigen::Vector2d hi = (area.max / kPatchCellM).array().floor();
   if (!((hi.x() - lo.x() + 1.0) * (hi.y() - lo.y() + 1.0) <= kMaxCells)) return;
@@ -61,7 +62,13 @@ void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const 
       const double ry = 0.5 + 1.0 * static_cast<double>((h >> 32) & 0xff) / 255.0;
       const Eigen::Vector2d c{(static_cast<double>(cx) + u) * kPatchCellM,
                               (static_cast<double>(cy) + v) * kPatchCellM};
-      if (!Aabb2{c.array() - rx, c.array() + rx}.overlaps(area)) continue;
+      const Aabb2 extent{c.array() - rx, c.array() + rx};
+      if (!extent.overlaps(area)) continue;
+      // Stains stay off the walls.
+      if (lot != nullptr && !(extent.min.cwiseMax(lot->min) == extent.min &&
+                              extent.max.cwiseMin(lot->max) == extent.max)) {
+        continue;
+      }
       const double ang = static_cast<double>((h >> 40) & 0xff) / 255.0 * 3.14159265358979323846;
       const Eigen::Vector2d ax{std::cos(ang), std::sin(ang)};
       const Eigen::Vector2d ay{-ax.y(), ax.x()};
@@ -116,7 +123,7 @@ void drawGround(Canvas& canvas, const Camera& camera, const Scene& scene, const 
       }
     }
   } else {
-    drawPatches(canvas, camera, area, palette);
+    drawPatches(canvas, camera, area, scene.bounds ? &*scene.bounds : nullptr, palette);
   }
 }
 
