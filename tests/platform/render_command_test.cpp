@@ -207,3 +207,75 @@ TEST(RenderCommand, MissingOutIsAUsageError) {
 
 }  // namespace
 }  // namespace cardemo
+
+namespace cardemo {
+namespace {
+
+TEST(RenderCommand, SpritesChangeTheImageAndTintTheParkedCars) {
+  const fs::path plain = scratch("plain.png");
+  const fs::path sprites = scratch("sprites.png");
+  ASSERT_EQ(render("'" + kLot + "' --out '" + plain.string() + "'").status, 0);
+  const CommandResult run = render("'" + kLot + "' --sprites --out '" + sprites.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const Surface a = loadRgba(plain);
+  const Surface b = loadRgba(sprites);
+  ASSERT_TRUE(a && b);
+  EXPECT_FALSE(samePixels(*a, *b));
+  // The light-grey body sprite, tinted: a parked car's middle is darker than its paint but of the
+  // same hue (its largest channel stays the largest).
+  const Parsed<Scene> scene = loadScene(kLot);
+  ASSERT_TRUE(scene.ok());
+  const Obb2 player =
+      Obb2::fromDegrees(scene.value().player.position, scene.value().player.heading_deg,
+                        scene.value().player.length, scene.value().player.width);
+  const Camera camera = followCamera(player, 12.0, {1280, 720});
+  int checked = 0;
+  for (const ParkedCar& car : scene.value().parked) {
+    const Eigen::Vector2f s = camera.toScreen(car.box.center);
+    if (s.x() < 320 || s.x() > 1100 || s.y() < 160 || s.y() > 640) continue;
+    const Rgba c = pixel(*b, static_cast<int>(s.x()), static_cast<int>(s.y()));
+    const Rgba paint = parkedColor(car.id);
+    EXPECT_LE(c.r, paint.r + 3) << car.id << " " << str(c);
+    EXPECT_LE(c.g, paint.g + 3) << car.id << " " << str(c);
+    EXPECT_LE(c.b, paint.b + 3) << car.id << " " << str(c);
+    EXPECT_GE(c.r + c.g + c.b, (paint.r + paint.g + paint.b) * 7 / 10) << car.id << " " << str(c);
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+TEST(RenderCommand, MissingSpritesAreExit2WithTheReason) {
+  const fs::path out = scratch("none.png");
+  const CommandResult run = render("'" + kLot + "' --sprites --out '" + out.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const fs::path err = scratch("err.txt");
+  const std::string cmd =
+      "env -u DISPLAY CARDEMO_SPRITES=/no/such/dir '" + std::string(CARDEMO_BINARY) + "' render '" +
+      kLot + "' --sprites --out '" + out.string() + "' >/dev/null 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 2);
+  std::ifstream f(err);
+  const std::string text{std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+  EXPECT_NE(text.find("CARDEMO_SPRITES=/no/such/dir"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+}
+
+TEST(RenderCommand, RigKeepsThePictureInsideTheWalls) {
+  // The player starts 15 m from the west wall of the lot: the follow camera shows the void beyond
+  // it, the rig does not.
+  const fs::path follow = scratch("follow.png");
+  const fs::path rig = scratch("rig.png");
+  ASSERT_EQ(render("'" + kLot + "' --zoom 20 --out '" + follow.string() + "'").status, 0);
+  ASSERT_EQ(render("'" + kLot + "' --zoom 20 --rig --out '" + rig.string() + "'").status, 0);
+  const Surface a = loadRgba(follow);
+  const Surface b = loadRgba(rig);
+  ASSERT_TRUE(a && b);
+  const Rgba outside = Palette{}.outside;
+  // Left edge, below the HUD panel.
+  EXPECT_TRUE(near(pixel(*a, 2, 400), outside, 0)) << str(pixel(*a, 2, 400));
+  EXPECT_FALSE(near(pixel(*b, 2, 400), outside, 0)) << str(pixel(*b, 2, 400));
+  EXPECT_EQ(render("'" + kLot + "' --rig --center 0 0 --out '" + rig.string() + "'").status, 2);
+}
+
+}  // namespace
+}  // namespace cardemo
