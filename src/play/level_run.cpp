@@ -19,12 +19,18 @@ void LevelRun::restart(const World& world) {
   if (const ParkingScore* best = scores_.find(scene_name_)) best_before_ = *best;
   challenge_.emplace(*scene.goal, world.settings().hz, scene.player.health);
   challenge_->observe(world);
+  if (challenge_->over()) finish();
 }
 
 bool LevelRun::observe(const World& world) {
   if (!challenge_ || challenge_->over()) return false;
   challenge_->observe(world);
   if (!challenge_->over()) return false;
+  finish();
+  return true;
+}
+
+void LevelRun::finish() {
   if (const std::optional<ParkingScore> score = challenge_->score()) {
     if (scores_.offer(scene_name_, *score)) {
       new_best_ = true;
@@ -35,7 +41,6 @@ bool LevelRun::observe(const World& world) {
       }
     }
   }
-  return true;
 }
 
 std::string LevelRun::takeWarning() {

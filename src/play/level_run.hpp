@@ -14,7 +14,8 @@ namespace cardemo {
 /// The challenge of the scene being played (nothing when the scene has no goal).
 class LevelRun {
  public:
-  /// Starts on `world`'s frame; `best_path` is the best-scores file (empty: scores not kept).
+  /// Starts on `world`'s frame (which may already park the car); `best_path` is the best-scores
+  /// file (empty: scores not kept).
   LevelRun(const World& world, std::string best_path);
 
   /// A fresh challenge for a restarted world (the best score stays).
@@ -39,6 +40,7 @@ class LevelRun {
   [[nodiscard]] std::string takeWarning();
 
  private:
+  void finish();  // offers a parked score to the best scores and saves them when it is better
   std::string scene_name_;
   std::string best_path_;
   BestScores scores_;
