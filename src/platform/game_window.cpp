@@ -18,9 +18,11 @@
 #include "platform/sprite_path.hpp"
 #include "play/fixed_step_clock.hpp"
 #include "play/input_latch.hpp"
+#include "play/level_run.hpp"
 #include "render/camera_rig.hpp"
 #include "render/draw_world.hpp"
 #include "render/effects.hpp"
+#include "render/goal_overlay.hpp"
 
 namespace cardemo {
 namespace {
@@ -172,9 +174,10 @@ void pollEvents(LoopState& s, InputLatch& latch) {
   }
 }
 
-int writeSummary(const std::string& path, const World& world) {
+int writeSummary(const std::string& path, const World& world, const LevelRun& level) {
   if (path.empty()) return 0;
-  if (std::string why = writeFileAtomically(path, summaryJson(world).dump(2) + "\n");
+  if (std::string why =
+          writeFileAtomically(path, summaryJson(world, level.challenge()).dump(2) + "\n");
       !why.empty()) {
     std::fprintf(stderr, "%s\n", why.c_str());
     return 2;
@@ -215,6 +218,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
   const double hz = options.session.settings.hz;
   FixedStepClock clock(1.0 / hz, kMaxStepsPerFrame);
   InputLatch latch;
+  LevelRun level(session.world(), bestScoresPath());
   LoopState s;
   std::string note;
   bool over_reported = false;
@@ -237,6 +241,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
       session.restart();
       effects.reset(session.world());
       rig.reset(session.world());
+      level.restart(session.world());
       latch.releaseAll();
       over_reported = false;
       note = "restarted";
@@ -244,11 +249,17 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     int steps = s.paused ? 0 : clock.advance(elapsed, s.speed);
     if (s.paused && s.step_once) steps = 1;
     s.step_once = false;
-    for (int i = 0; i < steps; ++i) {
+    for (int i = 0; i < steps && !level.over(); ++i) {
       session.step(latch.sample());
       effects.observe(session.world());
       rig.step(session.world());
+      if (level.observe(session.world()) && level.over()) {
+        status = std::max(status, writeSummary(json_path, session.world(), level));
+      }
       if (options.progress) printFrame(session.world().frame());
+    }
+    if (const std::string warning = level.takeWarning(); !warning.empty()) {
+      std::fprintf(stderr, "%s\n", warning.c_str());
     }
     if (!record_error_reported && !session.recordError().empty()) {
       // Say so at once (disk full, file too large): the game goes on, the recording does not.
@@ -259,7 +270,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     }
     if (session.world().gameOver() && !over_reported) {
       over_reported = true;
-      status = std::max(status, writeSummary(json_path, session.world()));
+      status = std::max(status, writeSummary(json_path, session.world(), level));
       if (!record_error_reported && !session.recordError().empty()) {
         record_error_reported = true;
         std::fprintf(stderr, "%s\n", session.recordError().c_str());
@@ -267,7 +278,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
       }
     }
 
-    const bool frozen = s.paused || session.world().gameOver();
+    const bool frozen = s.paused || session.world().gameOver() || level.over();
     const Obb2 box = session.blendedBox(frozen ? 1.0 : clock.alpha());
     int w = 0, h = 0;
     SDL_GetRendererOutputSize(renderer, &w, &h);
@@ -279,7 +290,15 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     s.draw.sprites = true;
     const Camera camera =
         rig.camera({w, h}, frozen ? 1.0 : clock.alpha(), s.zoom / kDefaultZoom, effects.shake());
+    GoalView goal_view;
+    if (level.challenge() != nullptr) {
+      goal_view = {level.challenge(), level.best(), level.newBest()};
+      s.draw.game_over_rows = runSummaryRows(session.world(), goal_view);
+    }
     drawFrame(canvas, session.world(), camera, box, s.draw);
+    if (level.challenge() != nullptr) {
+      drawGoalOverlay(canvas, session.world(), camera, box, goal_view);
+    }
     if (s.screenshot) {
       s.screenshot = false;
       note = saveScreenshot(renderer);
@@ -294,7 +313,7 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
     if (!record_error_reported) std::fprintf(stderr, "%s\n", why.c_str());
     status = 2;
   }
-  return std::max(status, writeSummary(json_path, session.world()));
+  return std::max(status, writeSummary(json_path, session.world(), level));
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "geometry/obb2.hpp"
 #include "render/camera.hpp"
@@ -32,6 +34,8 @@ struct DrawOptions {
   const Effects* effects = nullptr;
   /// Draw cars, wheels and ground with the canvas's sprites when it has them (else vectors).
   bool sprites = false;
+  /// Rows of the GAME OVER panel in place of its default ones (a level's run summary).
+  std::vector<std::pair<std::string, std::string>> game_over_rows;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).
