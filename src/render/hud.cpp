@@ -136,9 +136,9 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
                  static_cast<float>(vp.y()) - ts.y() - 12.0f * s},
                 hint, small, kDim);
   }
-  if (options.paused) {
+  if (options.paused || !options.banner.empty()) {
     const int big = px(30, s);
-    const std::string text = "PAUSED";
+    const std::string text = options.banner.empty() ? "PAUSED" : options.banner;
     const Eigen::Vector2f ts = canvas.textSize(text, big);
     textPanel(canvas, {0.5f * (static_cast<float>(vp.x()) - ts.x()) - pad, 14.0f * s},
               {{text, {255, 220, 90, 255}}}, big, pad);
@@ -154,7 +154,7 @@ void drawGameOver(Canvas& canvas, const World& world) {
   const std::string detail =
       std::to_string(world.hits().size()) + " hits in " +
       format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz);
-  const std::string hint = "R restart    Esc quit";
+  const std::string hint = "Enter restart    Esc quit";
   const Eigen::Vector2f t = canvas.textSize(title, big);
   const float w = std::max(t.x(), canvas.textSize(hint, small).x()) + 80.0f * s;
   const float hgt = t.y() + 3.0f * small * 1.4f + 40.0f * s;
@@ -172,16 +172,19 @@ void drawGameOver(Canvas& canvas, const World& world) {
 
 const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   static const std::vector<std::pair<std::string, std::string>> keys{
-      {"Up / Down", "throttle / brake, then reverse"},
-      {"Left / Right", "steer"},
+      {"Up / Down, W / S", "throttle / brake, then reverse"},
+      {"Left / Right, A / D", "steer"},
+      {"Enter / Space", "restart after the game ends"},
       {"P", "pause / resume"},
       {"N", "step one frame while paused"},
       {"R", "restart"},
       {"B", "debug overlay (AABB, OBBs, candidates, contacts)"},
       {"+ / -", "zoom in / out"},
       {"[ / ]", "replay speed (0.25x to 8x)"},
+      {"M", "sound on / off"},
+      {"F11", "full screen"},
       {"F12", "save a PNG screenshot"},
-      {"F1", "this help"},
+      {"F1", "this help (the game waits)"},
       {"Esc", "quit"},
   };
   return keys;
