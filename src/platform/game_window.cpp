@@ -13,6 +13,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/summary_json.hpp"
+#include "platform/game_audio.hpp"
 #include "platform/game_controller.hpp"
 #include "platform/png_save.hpp"
 #include "platform/sdl_canvas.hpp"
@@ -20,6 +21,7 @@
 #include "play/fixed_step_clock.hpp"
 #include "play/input_latch.hpp"
 #include "play/play_flow.hpp"
+#include "play/sound_mix.hpp"
 #include "render/draw_world.hpp"
 
 namespace cardemo {
@@ -288,6 +290,15 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
   FixedStepClock clock(1.0 / hz, kMaxStepsPerFrame);
   Inputs in;
   PlayFlow flow;
+  GameAudio audio(options.sounds_dir, options.mute);
+  SoundMix sound;
+  InputFrame last_input;
+  // No sound is not an error: say so once, unless the player asked for silence (then on M).
+  bool audio_reported = false;
+  if (!options.mute && !audio.message().empty()) {
+    audio_reported = true;
+    std::fprintf(stderr, "cardemo play: %s\n", audio.message().c_str());
+  }
   LoopState s;
   std::string note;
   bool over_reported = false;
@@ -324,12 +335,23 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
       note = "attempt " + std::to_string(session.attempt());
       status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
+    if (s.toggle_mute) {
+      s.toggle_mute = false;
+      audio.toggleMute();
+      if (!audio.available() && !audio_reported) {
+        audio_reported = true;
+        std::fprintf(stderr, "cardemo play: %s\n", audio.message().c_str());
+      }
+      note = !audio.available() ? "no sound: see the terminal"
+             : audio.muted()    ? "sound off"
+                                : "sound on";
+    }
     const PadState pad = in.pad.read();
     if (pad.throttle > 0.0 || pad.brake > 0.0 || pad.steer != 0.0) flow.driveKeyPressed();
     flow.update(session.playingBack(), session.world().gameOver());
     const int steps = flow.stepsToRun(flow.holding() ? 0 : clock.advance(elapsed, flow.speed()));
     for (int i = 0; i < steps; ++i) {
-      session.step(mergeInputs(in.latch.sample(), in.analog.sample(pad)));
+      last_input = session.step(mergeInputs(in.latch.sample(), in.analog.sample(pad)));
       if (options.progress) printFrame(session.world().frame());
       // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
       flow.update(session.playingBack(), session.world().gameOver());
@@ -341,6 +363,8 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
       status = std::max(status, writeSummary(json_path, session.world()));
       status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
+
+    audio.apply(sound.update(session.world(), last_input, flow.holding()));
 
     const bool frozen = flow.holding() || session.world().gameOver();
     const Obb2 box = session.blendedBox(frozen ? 1.0 : clock.alpha());
