@@ -34,6 +34,7 @@ struct CarParams {
   double lock_speed = 20.0;       ///< Speed (m/s) at which the lock has narrowed to half.
   double restitution = 0.2;       ///< Share of the normal speed that bounces back after an impact.
   double bounce_threshold = 1.0;  ///< Impacts slower than this (m/s) do not bounce at all.
+  double skid_slip = 0.5;  ///< Lateral slip (m/s) above which the tyres count as sliding (skids).
   CarIntegrator integrator =
       CarIntegrator::kArcRk4;  ///< Scheme of integrateCar (docs/performance.md).
 };
@@ -45,9 +46,13 @@ struct CarState {
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  ///< (cos, sin) of heading, kept in sync.
   double speed = 0.0;  ///< Signed speed along the heading, m/s (negative when reversing).
   double steer = 0.0;  ///< Front-wheel angle, radians, positive to the left.
+  double slip = 0.0;   ///< Lateral (side-slip) speed across the heading, m/s, positive to the left.
 
-  /// Velocity vector in the world frame, m/s.
-  [[nodiscard]] Eigen::Vector2d velocity() const { return direction * speed; }
+  /// Velocity vector in the world frame (forward speed plus lateral slip), m/s.
+  [[nodiscard]] Eigen::Vector2d velocity() const {
+    return {direction.x() * speed - direction.y() * slip,
+            direction.y() * speed + direction.x() * slip};
+  }
 };
 
 /// Steering lock at a given speed: the lock narrows as speed grows.

@@ -368,6 +368,9 @@ void World::recordHits() {
 void World::step(const InputFrame& input) {
   const InputFrame in = gameOver() ? InputFrame{} : input;
   const CarState start = car_;
+  last_input_ = in;
+  braking_ = start.speed != 0.0 && (in.handbrake || (in.up && in.down) ||
+                                    (in.down && start.speed > 0.0) || (in.up && start.speed < 0.0));
   const CarState next = integrateCar(start, in, params_, 1.0 / settings_.hz);
   ++frame_;
   previous_contacts_.swap(contacts_);
@@ -389,6 +392,8 @@ void World::step(const InputFrame& input) {
   mergeDetected();
   resolveContacts();
   recordHits();
+  sliding_ = std::abs(car_.slip) > params_.skid_slip ||
+             (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
 }
 
 }  // namespace cardemo

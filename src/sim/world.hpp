@@ -88,6 +88,18 @@ class World {
   [[nodiscard]] const CarState& car() const { return car_; }
   /// The player's box.
   [[nodiscard]] Obb2 carBox() const;
+  /// The input applied at the last step (all keys up once the game is over, or before any step).
+  [[nodiscard]] const InputFrame& lastInput() const { return last_input_; }
+  /// The car's lateral slip speed, m/s, positive to the left of its heading.
+  [[nodiscard]] double slipSpeed() const { return car_.slip; }
+  /// True when the tyres slide (skid marks, screech): lateral slip above `CarParams::skid_slip`,
+  /// turning at the grip limit, or the handbrake locking moving wheels.
+  [[nodiscard]] bool sliding() const { return sliding_; }
+  /// True when the last step's input slowed a moving car (brake, throttle against a reverse roll,
+  /// both pedals, or the handbrake): the brake lights.
+  [[nodiscard]] bool braking() const { return braking_; }
+  /// True when the car moves backwards: the reversing lights.
+  [[nodiscard]] bool reversing() const { return car_.speed < 0.0; }
   /// Current health, never below 0.
   [[nodiscard]] int health() const { return health_; }
   /// True once health has reached 0 (input is ignored from then on).
@@ -121,6 +133,9 @@ class World {
   CarState car_;
   int health_ = 100;
   std::int64_t frame_ = 0;
+  InputFrame last_input_;
+  bool sliding_ = false;
+  bool braking_ = false;
   std::vector<HitEvent> hits_;
   std::vector<ActiveContact> contacts_;
   std::vector<std::uint32_t> candidates_;

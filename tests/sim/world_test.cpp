@@ -245,5 +245,31 @@ TEST(World, RotationProofBoxGivesTheSameHitsWithMoreCandidates) {
   EXPECT_GE(wide.stats().broadphase_candidates, tight.stats().broadphase_candidates);
 }
 
+TEST(World, RenderingAccessorsFollowTheInput) {
+  World world(sceneWith({}));
+  EXPECT_EQ(world.lastInput(), kNone);
+  EXPECT_FALSE(world.braking());
+  EXPECT_FALSE(world.reversing());
+  for (int f = 0; f < 120; ++f) world.step(kUp);
+  EXPECT_EQ(world.lastInput(), kUp);
+  EXPECT_FALSE(world.braking());
+  EXPECT_EQ(world.slipSpeed(), 0.0);
+  EXPECT_FALSE(world.sliding());
+  const InputFrame brake{false, true, false, false};
+  world.step(brake);
+  EXPECT_EQ(world.lastInput(), brake);
+  EXPECT_TRUE(world.braking());
+  EXPECT_FALSE(world.reversing());
+  while (world.car().speed > 0.0) world.step(brake);
+  for (int f = 0; f < 60; ++f) world.step(brake);  // stopped, so the same key reverses
+  EXPECT_TRUE(world.reversing());
+  EXPECT_FALSE(world.braking());
+  world.step(kUp);  // throttle against the reverse roll brakes
+  EXPECT_TRUE(world.braking());
+  const InputFrame handbrake{false, false, false, false, true};
+  world.step(handbrake);
+  EXPECT_TRUE(world.braking());
+}
+
 }  // namespace
 }  // namespace cardemo
