@@ -63,7 +63,8 @@ struct SdlDeleter {
   void operator()(SDL_Renderer* r) const { SDL_DestroyRenderer(r); }
 };
 
-// Arrows, and WASD by position (scancode), so the same physical keys drive on any layout.
+// Arrows, and WASD by position (scancode), so the same physical keys drive on any layout; Space
+// is the handbrake.
 bool driveKey(const SDL_Keysym& key, DriveKey& out) {
   switch (key.scancode) {
     case SDL_SCANCODE_UP:
@@ -81,6 +82,9 @@ bool driveKey(const SDL_Keysym& key, DriveKey& out) {
     case SDL_SCANCODE_RIGHT:
     case SDL_SCANCODE_D:
       out = DriveKey::kRight;
+      return true;
+    case SDL_SCANCODE_SPACE:
+      out = DriveKey::kHandbrake;
       return true;
     default:
       return false;
@@ -151,6 +155,8 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, PlayFlow& flow, I
   if (driveKey(key.keysym, drive)) {
     in.latch.press(drive);
     flow.driveKeyPressed();
+    // Space is also "restart" once the game has ended (the flow decides).
+    if (drive == DriveKey::kHandbrake && key.repeat == 0) s.confirm = true;
     return;
   }
   if (key.repeat != 0) return;  // toggles act once per press
@@ -160,7 +166,6 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, PlayFlow& flow, I
       break;
     case SDLK_RETURN:
     case SDLK_KP_ENTER:
-    case SDLK_SPACE:
       s.confirm = true;
       break;
     case SDLK_p:
@@ -347,7 +352,9 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
                                 : "sound on";
     }
     const PadState pad = in.pad.read();
-    if (pad.throttle > 0.0 || pad.brake > 0.0 || pad.steer != 0.0) flow.driveKeyPressed();
+    if (pad.throttle > 0.0 || pad.brake > 0.0 || pad.steer != 0.0 || pad.handbrake) {
+      flow.driveKeyPressed();
+    }
     flow.update(session.playingBack(), session.world().gameOver());
     const int steps = flow.stepsToRun(flow.holding() ? 0 : clock.advance(elapsed, flow.speed()));
     for (int i = 0; i < steps; ++i) {

@@ -41,6 +41,7 @@ InputFrame AnalogDrive::sample(const PadState& pad) {
   out.down = down_.next(pad.brake);
   out.left = left_.next(-pad.steer);
   out.right = right_.next(pad.steer);
+  out.handbrake = pad.handbrake;
   return out;
 }
 

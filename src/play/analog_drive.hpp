@@ -40,7 +40,8 @@ struct PadState {
 
 /// Turns PadState into InputFrames, one per fixed step, with a sigma-delta per control: the share
 /// of steps a key is held equals the analog level (to within one step over any stretch), so a
-/// half-pressed trigger gives half the throttle on average. The output is plain keys: the
+/// half-pressed trigger gives half the throttle on average; the handbrake button is passed on as
+/// it is. The output is plain keys: the
 /// recording is an ordinary replay and replays give the same hash.
 class AnalogDrive {
  public:

@@ -53,6 +53,13 @@ SoundFrame SoundMix::update(const World& world, const InputFrame& input, bool ho
   out.engine = engineGains(speed, settings_);
   for (double& g : out.engine) g *= level;
   out.screech = screechLevel(world.car(), world.settings().car, input, settings_);
+  if (world.sliding()) {
+    // The simulation's own verdict (slip over CarParams::skid_slip, or the handbrake locking
+    // moving wheels): at least a clear squeal, louder with the slip speed.
+    out.screech =
+        std::max(out.screech, std::clamp(std::abs(world.slipSpeed()) / settings_.full_screech_slip,
+                                         settings_.min_slide_level, 1.0));
+  }
   return out;
 }
 

@@ -22,6 +22,8 @@ struct SoundSettings {
   double slide_accel = 6.0;      ///< Lateral acceleration (m/s^2) where the tyres start to squeal.
   double slide_full_accel = 12.0;    ///< Lateral acceleration of a full-volume screech.
   double brake_screech_speed = 8.0;  ///< Braking above this speed (m/s) screeches.
+  double min_slide_level = 0.6;      ///< Screech level whenever World::sliding() is true.
+  double full_screech_slip = 4.0;    ///< Lateral slip (m/s) of a full-volume screech.
   double full_impact_damage = 50.0;  ///< Damage of a full-volume impact.
   double min_impact_level = 0.2;     ///< The gentlest hit is still heard at this level.
 };
@@ -52,7 +54,8 @@ class SoundMix {
   /// The levels for this frame. `input` is the last step's input; `holding` is true while the
   /// simulation holds (pause, help): then the loops are silent. A hit that arrived since the last
   /// call (or a new game: fewer hits than before) starts an impact whose level follows the
-  /// largest new damage. Once the game is over the engine and screech stop.
+  /// largest new damage. The screech is the larger of screechLevel() and, while World::sliding(),
+  /// the slip speed's level. Once the game is over the engine and screech stop.
   [[nodiscard]] SoundFrame update(const World& world, const InputFrame& input, bool holding);
 
  private:

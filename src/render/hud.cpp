@@ -174,7 +174,8 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   static const std::vector<std::pair<std::string, std::string>> keys{
       {"Up / Down, W / S", "throttle / brake, then reverse"},
       {"Left / Right, A / D", "steer"},
-      {"Enter / Space", "restart after the game ends"},
+      {"Space", "handbrake; after the game ends: restart"},
+      {"Enter", "restart after the game ends"},
       {"P", "pause / resume"},
       {"N", "step one frame while paused"},
       {"R", "restart"},

@@ -104,6 +104,8 @@ TEST(AnalogDrive, HalfStickSteersHalfTheSteps) {
     up += f.up ? 1 : 0;
   }
   EXPECT_EQ(left, 50);
+  pad.handbrake = true;
+  EXPECT_TRUE(drive.sample(pad).handbrake);
   EXPECT_EQ(right, 0);
   EXPECT_EQ(up, 100);
 }

@@ -139,5 +139,17 @@ TEST(SoundMix, ARestartedGameIsHeardAfresh) {
   EXPECT_GT(mix.update(second, up, false).impact, 0.0);
 }
 
+TEST(SoundMix, HandbrakeSlideScreeches) {
+  World world = lot();
+  SoundMix mix;
+  const InputFrame up{true, false, false, false};
+  for (int i = 0; i < 360; ++i) world.step(up);  // about 3 s of throttle, well above skid_slip
+  EXPECT_EQ(mix.update(world, up, false).screech, 0.0);
+  const InputFrame handbrake{false, false, false, false, true};
+  world.step(handbrake);
+  ASSERT_TRUE(world.sliding());
+  EXPECT_GE(mix.update(world, handbrake, false).screech, SoundSettings{}.min_slide_level);
+}
+
 }  // namespace
 }  // namespace cardemo
