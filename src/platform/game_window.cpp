@@ -321,7 +321,7 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     last = now;
     if (elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.95 * fps + 0.05 / elapsed;
 
-    if (s.confirm && flow.confirm(session.world().gameOver())) s.restart = true;
+    if (s.confirm && flow.confirm(session.ended())) s.restart = true;
     s.confirm = false;
     if (s.restart) {
       s.restart = false;
@@ -355,13 +355,13 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     if (pad.throttle > 0.0 || pad.brake > 0.0 || pad.steer != 0.0 || pad.handbrake) {
       flow.driveKeyPressed();
     }
-    flow.update(session.playingBack(), session.world().gameOver());
+    flow.update(session.playingBack(), session.ended());
     const int steps = flow.stepsToRun(flow.holding() ? 0 : clock.advance(elapsed, flow.speed()));
     for (int i = 0; i < steps; ++i) {
       last_input = session.step(mergeInputs(in.latch.sample(), in.analog.sample(pad)));
       if (options.progress) printFrame(session.world().frame());
       // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
-      flow.update(session.playingBack(), session.world().gameOver());
+      flow.update(session.playingBack(), session.ended());
       if (flow.holding()) break;
     }
     status = std::max(status, reportRecordError(session, record_error_reported, note));

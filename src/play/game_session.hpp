@@ -43,6 +43,9 @@ class GameSession {
 
   /// The world.
   [[nodiscard]] const World& world() const { return *world_; }
+  /// True once this attempt has ended (GAME OVER): nothing more is simulated, and Enter or Space
+  /// restarts.
+  [[nodiscard]] bool ended() const { return world_->gameOver(); }
   /// True while the replay still has inputs.
   [[nodiscard]] bool playingBack() const { return run_ < config_.playback.size(); }
   /// Frames of replay input not yet played.

@@ -154,7 +154,7 @@ void drawGameOver(Canvas& canvas, const World& world) {
   const std::string detail =
       std::to_string(world.hits().size()) + " hits in " +
       format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz);
-  const std::string hint = "Enter restart    Esc quit";
+  const std::string hint = "R restart    Esc quit";
   const Eigen::Vector2f t = canvas.textSize(title, big);
   const float w = std::max(t.x(), canvas.textSize(hint, small).x()) + 80.0f * s;
   const float hgt = t.y() + 3.0f * small * 1.4f + 40.0f * s;

@@ -130,6 +130,7 @@ TEST(GameSession, GameOverFreezesAndFinishesTheRecording) {
   GameSession session(std::move(config));
   for (int i = 0; i < 3000 && !session.world().gameOver(); ++i) session.step({true});
   ASSERT_TRUE(session.world().gameOver());
+  EXPECT_TRUE(session.ended());
   EXPECT_FALSE(session.recording());
   EXPECT_TRUE(fs::exists(path));
   const std::int64_t frame = session.world().frame();
