@@ -357,7 +357,7 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     }
     flow.update(session.playingBack(), session.ended());
     const int steps = flow.stepsToRun(flow.holding() ? 0 : clock.advance(elapsed, flow.speed()));
-    for (int i = 0; i < steps; ++i) {
+    for (int i = 0; i < steps && !session.ended(); ++i) {
       last_input = session.step(mergeInputs(in.latch.sample(), in.analog.sample(pad)));
       if (options.progress) printFrame(session.world().frame());
       // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
