@@ -12,6 +12,9 @@
 #include "io/replay_runner.hpp"
 #include "io/scene_json.hpp"
 #include "platform/game_window.hpp"
+#include "platform/scene_picker.hpp"
+#include "play/best_scores.hpp"
+#include "play/level_list.hpp"
 #include "play/recorder.hpp"
 
 namespace cardemo::app {
@@ -48,11 +51,13 @@ std::vector<fs::path> assetFolders() {
   return folders;
 }
 
-std::string findDefaultScene() {
+// The first assets folder that holds the bundled lot, or empty.
+std::string findAssetsFolder() {
   for (const fs::path& folder : assetFolders()) {
     std::error_code ec;
-    const fs::path candidate = folder / kDefaultScene;
-    if (fs::is_regular_file(candidate, ec)) return candidate.lexically_normal().string();
+    if (fs::is_regular_file(folder / kDefaultScene, ec)) {
+      return folder.lexically_normal().string();
+    }
   }
   return {};
 }
@@ -67,6 +72,28 @@ std::string findSounds() {
     }
   }
   return {};
+}
+
+// Without SCENE or --replay: the picker lists the levels and the free-drive lot. Empty when the
+// player quits it; `status` says whether that is an error.
+std::string pickScene(int& status) {
+  status = 0;
+  const std::string assets = findAssetsFolder();
+  if (assets.empty()) {
+    std::fprintf(stderr,
+                 "cardemo play: cannot find the bundled %s next to the executable; give SCENE "
+                 "or set CARDEMO_ASSETS to the assets folder\n",
+                 kDefaultScene);
+    status = 2;
+    return {};
+  }
+  std::vector<std::string> warnings;
+  const std::vector<LevelEntry> entries = listLevels(assets, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
+  std::string warning;
+  const BestScores best = loadBestScores(bestScoresPath(), warning);
+  if (!warning.empty()) std::fprintf(stderr, "%s\n", warning.c_str());
+  return runScenePicker(entries, best, status).value_or(std::string());
 }
 
 int runPlayCommand(const PlayOptions& options) {
@@ -116,14 +143,9 @@ int runPlayCommand(const PlayOptions& options) {
     session.playback = std::move(replay).value().runs;
   }
   if (scene_path.empty()) {
-    scene_path = findDefaultScene();
-    if (scene_path.empty()) {
-      std::fprintf(stderr,
-                   "cardemo play: cannot find the bundled %s next to the executable; give SCENE "
-                   "or set CARDEMO_ASSETS to the assets folder\n",
-                   kDefaultScene);
-      return 2;
-    }
+    int status = 0;
+    scene_path = pickScene(status);
+    if (scene_path.empty()) return status;
   }
   Parsed<Scene> scene = loadScene(scene_path);
   if (!scene.ok()) {
@@ -142,7 +164,8 @@ void addPlayCommand(CLI::App& app, int& exit_code) {
   CLI::App* sub =
       app.add_subcommand("play", "Drive in a window with the arrow keys or WASD (F1: help)");
   sub->add_option("SCENE", options->scene_path,
-                  "Scene file (default: the bundled parking lot, or the replay's scene)");
+                  "Scene file (default: the replay's scene, else a picker of the bundled levels "
+                  "and the free-drive lot)");
   sub->add_option(
       "--record", options->record_path,
       "Record every simulated step to FILE as a replay (FILE.part while playing); after a "

@@ -77,6 +77,16 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
   return out;
 }
 
+std::string goalText(const ParkingChallenge* challenge) {
+  if (challenge == nullptr) return "";
+  if (const std::optional<ParkingScore> score = challenge->score()) {
+    return "parked    frame " + std::to_string(score->frames) + " (" +
+           fixedText(score->seconds, 2) + " s), damage " + std::to_string(score->damage) + ", " +
+           std::to_string(score->stars) + (score->stars == 1 ? " star\n" : " stars\n");
+  }
+  return std::string("parked    never") + (challenge->timedOut() ? " (time limit)\n" : "\n");
+}
+
 int runReplayCommand(const ReplayOptions& options) {
   const Parsed<Replay> replay = loadReplay(options.replay_path);
   if (!replay.ok()) {
@@ -103,9 +113,12 @@ int runReplayCommand(const ReplayOptions& options) {
     trace->write("frame,x,y,heading_deg,speed,steer_deg,health,contacts\n");
     trace->write(traceRow(world));
   }
+  std::optional<ParkingChallenge> challenge = startChallenge(world);
   runReplayInputs(world, replay.value(), [&](const World& w) {
     if (trace) trace->write(traceRow(w));
+    if (challenge) challenge->observe(w);
   });
+  const ParkingChallenge* goal = challenge ? &*challenge : nullptr;
   if (trace) {
     if (std::string why = trace->commit(); !why.empty()) {
       std::fprintf(stderr, "%s\n", why.c_str());
@@ -114,27 +127,29 @@ int runReplayCommand(const ReplayOptions& options) {
   }
 
   const bool json_to_stdout = options.json_path == "-";
-  const std::string summary = summaryText(world, options);
+  const std::string summary = summaryText(world, options) + goalText(goal);
   std::fputs(summary.c_str(), json_to_stdout ? stderr : stdout);
   if (!options.json_path.empty()) {
-    if (std::string why = writeFileAtomically(options.json_path, summaryJson(world).dump(2) + "\n");
+    if (std::string why =
+            writeFileAtomically(options.json_path, summaryJson(world, goal).dump(2) + "\n");
         !why.empty()) {
       std::fprintf(stderr, "%s\n", why.c_str());
       return 2;
     }
   }
   if (options.print_expect) {
-    std::fputs(formatExpectations(expectationsOf(world)).c_str(), json_to_stdout ? stderr : stdout);
+    std::fputs(formatExpectations(expectationsOf(world, goal)).c_str(),
+               json_to_stdout ? stderr : stdout);
   }
 
-  const std::vector<std::string> diffs = checkExpectations(replay.value(), world);
+  const std::vector<std::string> diffs = checkExpectations(replay.value(), world, goal);
   FILE* report = json_to_stdout ? stderr : stdout;
   if (!diffs.empty()) {
     for (const std::string& d : diffs) std::fprintf(report, "FAILED    %s\n", d.c_str());
     return 1;
   }
   const ReplayExpectations& e = replay.value().expect;
-  if (e.health || e.hit_count || e.hits || e.hash || e.frames)
+  if (e.health || e.hit_count || e.hits || e.hash || e.frames || e.parked)
     std::fputs("expect    all met\n", report);
   return 0;
 }

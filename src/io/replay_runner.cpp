@@ -46,7 +46,16 @@ std::string hitsText(const std::vector<ExpectedHit>& hits) {
 
 }  // namespace
 
-ReplayExpectations expectationsOf(const World& world) {
+std::optional<ParkingChallenge> startChallenge(const World& world) {
+  const Scene& scene = world.scene();
+  if (!scene.goal) return std::nullopt;
+  std::optional<ParkingChallenge> challenge(std::in_place, *scene.goal, world.settings().hz,
+                                            scene.player.health);
+  challenge->observe(world);
+  return challenge;
+}
+
+ReplayExpectations expectationsOf(const World& world, const ParkingChallenge* challenge) {
   ReplayExpectations e;
   e.frames = world.frame();
   e.health = world.health();
@@ -55,12 +64,14 @@ ReplayExpectations expectationsOf(const World& world) {
   for (const HitEvent& h : world.hits()) hits.push_back({h.frame, h.id});
   e.hits = std::move(hits);
   e.hash = hashHex(world.stateHash());
+  if (challenge != nullptr) e.parked = challenge->parkedFrame();
   return e;
 }
 
-std::vector<std::string> checkExpectations(const Replay& replay, const World& world) {
+std::vector<std::string> checkExpectations(const Replay& replay, const World& world,
+                                           const ParkingChallenge* challenge) {
   std::vector<std::string> diffs;
-  const ReplayExpectations actual = expectationsOf(world);
+  const ReplayExpectations actual = expectationsOf(world, challenge);
   const ReplayExpectations& want = replay.expect;
   if (want.frames && *want.frames != *actual.frames) {
     diffs.push_back("frames: expected " + std::to_string(*want.frames) + ", got " +
@@ -85,6 +96,16 @@ std::vector<std::string> checkExpectations(const Replay& replay, const World& wo
   }
   if (want.hash && *want.hash != *actual.hash) {
     diffs.push_back("hash: expected " + *want.hash + ", got " + *actual.hash);
+  }
+  if (want.parked) {
+    const auto text = [](const std::optional<std::int64_t>& f) {
+      return f ? "frame " + std::to_string(*f) : std::string("never");
+    };
+    if (!actual.parked) {
+      diffs.push_back("parked: expected " + text(*want.parked) + ", but the scene has no goal");
+    } else if (*want.parked != *actual.parked) {
+      diffs.push_back("parked: expected " + text(*want.parked) + ", got " + text(*actual.parked));
+    }
   }
   return diffs;
 }

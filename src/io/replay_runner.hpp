@@ -7,6 +7,7 @@
 
 #include "io/input_error.hpp"
 #include "io/replay_text.hpp"
+#include "sim/parking_goal.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
@@ -23,10 +24,18 @@ namespace cardemo {
 void runReplayInputs(World& world, const Replay& replay,
                      const std::function<void(const World&)>& after_step = {});
 
-/// Compares the replay's expectation lines with the world's outcome; one sentence per difference.
-[[nodiscard]] std::vector<std::string> checkExpectations(const Replay& replay, const World& world);
+/// A parking challenge for the world's scene that has observed its current frame, or nullopt when
+/// the scene has no goal.
+[[nodiscard]] std::optional<ParkingChallenge> startChallenge(const World& world);
 
-/// Expectation lines that describe the world's outcome exactly (for `replay --bless`).
-[[nodiscard]] ReplayExpectations expectationsOf(const World& world);
+/// Compares the replay's expectation lines with the world's outcome (and the challenge's, for
+/// `expect parked`; null when the scene has no goal); one sentence per difference.
+[[nodiscard]] std::vector<std::string> checkExpectations(
+    const Replay& replay, const World& world, const ParkingChallenge* challenge = nullptr);
+
+/// Expectation lines that describe the world's outcome exactly (for `replay --print-expect`); with
+/// a challenge, also `expect parked`.
+[[nodiscard]] ReplayExpectations expectationsOf(const World& world,
+                                                const ParkingChallenge* challenge = nullptr);
 
 }  // namespace cardemo

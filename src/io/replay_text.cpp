@@ -8,7 +8,8 @@
 
 // Syntax (docs/replay.md): after the header `cardemo-replay 1`, each line is one of
 //   scene PATH | hz N | COUNT KEYS (`.` or letters of U D L R H) | expect health H | expect hits N
-//   | expect hit FRAME ID | expect frames N | expect hash HEX16
+//   | expect hit FRAME ID | expect frames N | expect hash HEX16 | expect parked FRAME
+//   | expect parked never
 // `#` starts a comment at the start of a line or after a space or tab (so ids and paths may hold
 // '#'). Trailing spaces and a UTF-8 byte order mark before the header are tolerated (editors on
 // Windows add one).
@@ -281,9 +282,21 @@ class ReplayParser {
       }
       frames_line_ = line_;
       e.frames = v;
+    } else if (what == "parked") {
+      if (parked_line_ != 0) return duplicate("expect parked", parked_line_);
+      std::int64_t v = 0;
+      if (rest == "never") {
+        e.parked = std::optional<std::int64_t>{};
+      } else if (whole(rest, kMaxReplayFrames, v)) {
+        e.parked = std::optional<std::int64_t>{v};
+      } else {
+        return error("expect parked: expected a frame from 0 to " +
+                     std::to_string(kMaxReplayFrames) + " or \"never\", found " + quoted(rest));
+      }
+      parked_line_ = line_;
     } else {
       return error("unknown expectation " + quoted(what) +
-                   " (expected health, hits, hit, frames or hash)");
+                   " (expected health, hits, hit, frames, hash or parked)");
     }
     return std::nullopt;
   }
@@ -307,7 +320,7 @@ class ReplayParser {
   int line_ = 0;
   std::int64_t total_ = 0;
   int scene_line_ = 0, hz_line_ = 0, health_line_ = 0, hits_line_ = 0, hash_line_ = 0,
-      frames_line_ = 0;
+      frames_line_ = 0, parked_line_ = 0;
 };
 
 }  // namespace
@@ -358,6 +371,10 @@ std::string formatExpectations(const ReplayExpectations& e) {
     for (const ExpectedHit& hit : *e.hits) {
       out += "expect hit " + std::to_string(hit.frame) + " " + hit.id + "\n";
     }
+  }
+  if (e.parked) {
+    out +=
+        "expect parked " + (*e.parked ? std::to_string(**e.parked) : std::string("never")) + "\n";
   }
   if (e.hash) out += "expect hash " + *e.hash + "\n";
   return out;

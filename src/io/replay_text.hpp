@@ -31,6 +31,8 @@ struct ReplayExpectations {
   std::optional<std::vector<ExpectedHit>> hits;  ///< `expect hit F ID` lines, in order
   std::optional<std::string> hash;               ///< `expect hash HEX16`
   std::optional<std::int64_t> frames;            ///< `expect frames N`
+  /// `expect parked FRAME` (inner value) or `expect parked never` (inner nullopt).
+  std::optional<std::optional<std::int64_t>> parked;
 };
 
 /// A parsed replay.

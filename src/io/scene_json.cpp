@@ -22,6 +22,10 @@ constexpr double kMaxCoordinate = 1e9;
 constexpr double kMaxCarSize = 1e4;
 constexpr double kMaxSpeed = 1000.0;
 constexpr double kMaxHealth = 1e6;
+constexpr double kMaxGoalTime = 1e5;
+constexpr double kMaxLevelOrder = 1e4;
+constexpr std::size_t kMaxTitleBytes = 64;
+constexpr double kMaxMarkingWidth = 10.0;
 constexpr std::string_view kFormat = "cardemo-scene/1";
 
 enum class Rule { kCoordinate, kSize, kSpeed };
@@ -38,7 +42,10 @@ class SceneReader {
       return fail(root.line, std::string("a scene must be a JSON object, found ") +
                                  json_lines::kindName(root.kind));
     }
-    if (!onlyKeys(root, {"format", "name", "bounds", "player", "parked", "obstacles"}, "")) {
+    if (!onlyKeys(root,
+                  {"format", "name", "bounds", "player", "parked", "obstacles", "goal", "level",
+                   "markings"},
+                  "")) {
       return false;
     }
     const Node* format = required(root, "format", "");
@@ -62,6 +69,19 @@ class SceneReader {
     if (parked == nullptr || !readParked(*parked, scene.parked)) return false;
     if (const Node* obstacles = root.find("obstacles")) {
       if (!readObstacles(*obstacles, scene.obstacles)) return false;
+    }
+    if (const Node* goal = root.find("goal")) {
+      Goal g;
+      if (!readGoal(*goal, g)) return false;
+      scene.goal = g;
+    }
+    if (const Node* level = root.find("level")) {
+      LevelInfo info;
+      if (!readLevel(*level, info)) return false;
+      scene.level = std::move(info);
+    }
+    if (const Node* markings = root.find("markings")) {
+      if (!readMarkings(*markings, scene.markings)) return false;
     }
     return true;
   }
@@ -263,6 +283,116 @@ class SceneReader {
       }
       out.polygon = *polygon;
       obstacles.push_back(std::move(out));
+    }
+    return true;
+  }
+
+  // A number in (0, max]; `what` completes "must be finite, > 0 and at most ...".
+  bool positive(const Node& n, const std::string& path, double max, const char* what, double& out) {
+    if (!isKind(n, Kind::kNumber, path)) return false;
+    const double v = n.number;
+    if (!std::isfinite(v) || !(v > 0.0) || v > max) {
+      return fail(n.line, path + ": must be finite, > 0 and at most " + what);
+    }
+    out = v;
+    return true;
+  }
+
+  bool optionalPositive(const Node& obj, std::string_view key, const std::string& path, double max,
+                        const char* what, double& out) {
+    const Node* n = obj.find(key);
+    return n == nullptr || positive(*n, join(path, key), max, what, out);
+  }
+
+  bool readGoal(const Node& n, Goal& goal) {
+    const std::string path = "goal";
+    if (!isKind(n, Kind::kObject, path) ||
+        !onlyKeys(n,
+                  {"bay", "position_tolerance", "heading_tolerance_deg", "either_direction",
+                   "max_speed", "par_time", "time_limit"},
+                  path)) {
+      return false;
+    }
+    const Node* bay = required(n, "bay", path);
+    if (bay == nullptr || !isKind(*bay, Kind::kObject, "goal.bay") ||
+        !onlyKeys(*bay, {"x", "y", "heading_deg", "length", "width"}, "goal.bay") ||
+        !readPose(*bay, "goal.bay", goal.bay.center, goal.bay.heading_deg, goal.bay.length,
+                  goal.bay.width)) {
+      return false;
+    }
+    if (!optionalPositive(n, "position_tolerance", path, kMaxCarSize, "10000 m",
+                          goal.position_tolerance) ||
+        !optionalPositive(n, "heading_tolerance_deg", path, 180.0, "180 degrees",
+                          goal.heading_tolerance_deg) ||
+        !optionalPositive(n, "max_speed", path, kMaxSpeed, "1000 m/s", goal.max_speed)) {
+      return false;
+    }
+    if (const Node* e = n.find("either_direction")) {
+      if (!isKind(*e, Kind::kBool, "goal.either_direction")) return false;
+      goal.either_direction = e->boolean;
+    }
+    for (const auto& [key, slot] :
+         {std::pair{"par_time", &goal.par_time}, std::pair{"time_limit", &goal.time_limit}}) {
+      double seconds = 0.0;
+      const Node* t = n.find(key);
+      if (t == nullptr) continue;
+      if (!positive(*t, join(path, key), kMaxGoalTime, "100000 s", seconds)) return false;
+      *slot = seconds;
+    }
+    if (goal.par_time && goal.time_limit && *goal.par_time > *goal.time_limit) {
+      return fail(n.find("par_time")->line, "goal.par_time: must not exceed goal.time_limit");
+    }
+    return true;
+  }
+
+  bool readLevel(const Node& n, LevelInfo& level) {
+    const std::string path = "level";
+    if (!isKind(n, Kind::kObject, path) || !onlyKeys(n, {"order", "title"}, path)) return false;
+    const Node* order = required(n, "order", path);
+    if (order == nullptr || !isKind(*order, Kind::kNumber, "level.order")) return false;
+    if (std::floor(order->number) != order->number || !(order->number >= 1) ||
+        order->number > kMaxLevelOrder) {
+      return fail(order->line, "level.order: must be an integer from 1 to 10000");
+    }
+    level.order = static_cast<int>(order->number);
+    const Node* title = required(n, "title", path);
+    if (title == nullptr || !isKind(*title, Kind::kString, "level.title")) return false;
+    const std::string& t = title->text;
+    const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; };
+    if (t.empty() || t.size() > kMaxTitleBytes || std::any_of(t.begin(), t.end(), control)) {
+      return fail(title->line, "level.title: must be 1 to 64 bytes without control characters");
+    }
+    level.title = t;
+    return true;
+  }
+
+  bool readMarkings(const Node& n, std::vector<Marking>& markings) {
+    if (!isKind(n, Kind::kArray, "markings")) return false;
+    markings.reserve(n.items.size());
+    for (std::size_t i = 0; i < n.items.size(); ++i) {
+      const Node& m = n.items[i];
+      const std::string path = "markings[" + std::to_string(i) + "]";
+      Marking out;
+      if (!isKind(m, Kind::kObject, path) || !onlyKeys(m, {"type", "from", "to", "width"}, path)) {
+        return false;
+      }
+      const Node* type = required(m, "type", path);
+      if (type == nullptr || !isKind(*type, Kind::kString, path + ".type")) return false;
+      if (type->text == "line") {
+        out.kind = Marking::Kind::kLine;
+      } else if (type->text == "arrow") {
+        out.kind = Marking::Kind::kArrow;
+      } else {
+        return fail(type->line, path + ".type: expected \"line\" or \"arrow\", found \"" +
+                                    printable(type->text) + "\"");
+      }
+      const Node* from = required(m, "from", path);
+      if (from == nullptr || !point(*from, path + ".from", out.from)) return false;
+      const Node* to = required(m, "to", path);
+      if (to == nullptr || !point(*to, path + ".to", out.to)) return false;
+      if (out.from == out.to) return fail(m.line, path + ": from and to must differ");
+      if (!optionalPositive(m, "width", path, kMaxMarkingWidth, "10 m", out.width)) return false;
+      markings.push_back(out);
     }
     return true;
   }

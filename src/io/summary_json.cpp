@@ -14,13 +14,26 @@ nlohmann::json hzJson(double hz) {
 
 }  // namespace
 
-nlohmann::json summaryJson(const World& world) {
+nlohmann::json scoreJson(const ParkingScore& score) {
+  return {{"frames", score.frames},
+          {"seconds", score.seconds},
+          {"damage", score.damage},
+          {"stars", score.stars}};
+}
+
+nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge) {
   nlohmann::json hits = nlohmann::json::array();
   for (const HitEvent& h : world.hits()) {
     hits.push_back({{"frame", h.frame}, {"id", h.id}, {"speed", h.speed}, {"damage", h.damage}});
   }
   const CarState& car = world.car();
   const WorldStats& s = world.stats();
+  nlohmann::json parked = nullptr;
+  nlohmann::json score = nullptr;
+  if (challenge != nullptr && challenge->parkedFrame()) {
+    parked = *challenge->parkedFrame();
+    score = scoreJson(*challenge->score());
+  }
   return {
       {"scene", world.scene().name},
       {"hz", hzJson(world.settings().hz)},
@@ -43,6 +56,10 @@ nlohmann::json summaryJson(const World& world) {
         {"substeps", s.substeps},
         {"sweeps", s.sweeps},
         {"broadphase_builds", s.broadphase_builds}}},
+      {"goal", challenge != nullptr},
+      {"parked", parked},
+      {"score", score},
+      {"timed_out", challenge != nullptr && challenge->timedOut()},
   };
 }
 

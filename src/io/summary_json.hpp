@@ -3,12 +3,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/parking_goal.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
 
 /// Builds the summary JSON of a world after a run: scene, hz, frames, health, hits, final, hash,
-/// stats.
-[[nodiscard]] nlohmann::json summaryJson(const World& world);
+/// stats, and the parking challenge's `parked` (frame or null) and `score` (null unless parked).
+[[nodiscard]] nlohmann::json summaryJson(const World& world,
+                                         const ParkingChallenge* challenge = nullptr);
+
+/// The score as JSON: frames, seconds, damage, stars.
+[[nodiscard]] nlohmann::json scoreJson(const ParkingScore& score);
 
 }  // namespace cardemo

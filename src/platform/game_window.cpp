@@ -20,9 +20,11 @@
 #include "play/analog_drive.hpp"
 #include "play/fixed_step_clock.hpp"
 #include "play/input_latch.hpp"
+#include "play/level_run.hpp"
 #include "play/play_flow.hpp"
 #include "play/sound_mix.hpp"
 #include "render/draw_world.hpp"
+#include "render/goal_overlay.hpp"
 
 namespace cardemo {
 namespace {
@@ -251,9 +253,10 @@ void pollEvents(LoopState& s, PlayFlow& flow, Inputs& in, SDL_Window* window) {
   }
 }
 
-int writeSummary(const std::string& path, const World& world) {
+int writeSummary(const std::string& path, const World& world, const LevelRun& level) {
   if (path.empty()) return 0;
-  if (std::string why = writeFileAtomically(path, summaryJson(world).dump(2) + "\n");
+  if (std::string why =
+          writeFileAtomically(path, summaryJson(world, level.challenge()).dump(2) + "\n");
       !why.empty()) {
     std::fprintf(stderr, "%s\n", why.c_str());
     return 2;
@@ -295,6 +298,7 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
   FixedStepClock clock(1.0 / hz, kMaxStepsPerFrame);
   Inputs in;
   PlayFlow flow;
+  LevelRun level(session.world(), bestScoresPath());
   GameAudio audio(options.sounds_dir, options.mute);
   SoundMix sound;
   InputFrame last_input;
@@ -321,7 +325,9 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     last = now;
     if (elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.95 * fps + 0.05 / elapsed;
 
-    if (s.confirm && flow.confirm(session.ended())) s.restart = true;
+    // GAME OVER, or a level's PARKED / TIME UP: Enter or Space starts the next attempt.
+    const auto ended = [&] { return session.ended() || level.over(); };
+    if (s.confirm && flow.confirm(ended())) s.restart = true;
     s.confirm = false;
     if (s.restart) {
       s.restart = false;
@@ -332,6 +338,7 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
         status = 2;
       }
       session.restart();
+      level.restart(session.world());
       in.latch.releaseAll();
       in.analog.reset();
       flow.restarted();
@@ -355,25 +362,32 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     if (pad.throttle > 0.0 || pad.brake > 0.0 || pad.steer != 0.0 || pad.handbrake) {
       flow.driveKeyPressed();
     }
-    flow.update(session.playingBack(), session.ended());
+    flow.update(session.playingBack(), ended());
     const int steps = flow.stepsToRun(flow.holding() ? 0 : clock.advance(elapsed, flow.speed()));
-    for (int i = 0; i < steps && !session.ended(); ++i) {
+    for (int i = 0; i < steps && !ended(); ++i) {
       last_input = session.step(mergeInputs(in.latch.sample(), in.analog.sample(pad)));
+      if (level.observe(session.world()) && level.over()) {
+        status = std::max(status, writeSummary(json_path, session.world(), level));
+        if (level.challenge()->parkedFrame()) audio.playChime();
+      }
       if (options.progress) printFrame(session.world().frame());
       // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
-      flow.update(session.playingBack(), session.ended());
+      flow.update(session.playingBack(), ended());
       if (flow.holding()) break;
+    }
+    if (const std::string warning = level.takeWarning(); !warning.empty()) {
+      std::fprintf(stderr, "%s\n", warning.c_str());
     }
     status = std::max(status, reportRecordError(session, record_error_reported, note));
     if (session.world().gameOver() && !over_reported) {
       over_reported = true;
-      status = std::max(status, writeSummary(json_path, session.world()));
+      status = std::max(status, writeSummary(json_path, session.world(), level));
       status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
 
     audio.apply(sound.update(session.world(), last_input, flow.holding()));
 
-    const bool frozen = flow.holding() || session.world().gameOver();
+    const bool frozen = flow.holding() || session.world().gameOver() || level.over();
     const Obb2 box = session.blendedBox(frozen ? 1.0 : clock.alpha());
     int w = 0, h = 0;
     SDL_GetRendererOutputSize(renderer, &w, &h);
@@ -383,7 +397,16 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     s.draw.fps = fps;
     s.draw.playback_speed = session.playingBack() ? flow.chosenSpeed() : 0.0;
     s.draw.status = statusLine(session, options, note);
-    drawFrame(canvas, session.world(), followCamera(box, s.zoom, {w, h}), box, s.draw);
+    const Camera camera = followCamera(box, s.zoom, {w, h});
+    GoalView goal_view;
+    if (level.challenge() != nullptr) {
+      goal_view = {level.challenge(), level.best(), level.newBest()};
+      s.draw.game_over_rows = runSummaryRows(session.world(), goal_view);
+    }
+    drawFrame(canvas, session.world(), camera, box, s.draw);
+    if (level.challenge() != nullptr) {
+      drawGoalOverlay(canvas, session.world(), camera, box, goal_view);
+    }
     if (s.screenshot) {
       s.screenshot = false;
       note = saveScreenshot(renderer);
@@ -398,7 +421,7 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     if (!record_error_reported) std::fprintf(stderr, "%s\n", why.c_str());
     status = 2;
   }
-  return std::max(status, writeSummary(json_path, session.world()));
+  return std::max(status, writeSummary(json_path, session.world(), level));
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
   drawWorldLayer(canvas, world, camera, player_box, palette);
   if (options.debug_overlay) drawDebugOverlay(canvas, world, camera);
   drawHud(canvas, world, options);
-  if (world.gameOver()) drawGameOver(canvas, world);
+  if (world.gameOver()) drawGameOver(canvas, world, camera, player_box, options.game_over_rows);
   if (options.help) drawHelp(canvas);
 }
 

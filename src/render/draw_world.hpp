@@ -3,6 +3,8 @@
 /// and the debug overlay. The same code draws the window and the headless PNGs.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "geometry/obb2.hpp"
 #include "render/camera.hpp"
@@ -27,6 +29,8 @@ struct DrawOptions {
   double playback_speed = 0.0;
   /// Extra one-line status (e.g. "recording to drive.replay").
   std::string status;
+  /// Rows of the GAME OVER panel in place of its default ones (a level's run summary).
+  std::vector<std::pair<std::string, std::string>> game_over_rows;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).

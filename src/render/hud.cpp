@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/end_panel.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
@@ -145,29 +146,20 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   }
 }
 
-void drawGameOver(Canvas& canvas, const World& world) {
-  const Eigen::Vector2i vp = canvas.size();
-  const float s = hudScale(vp);
-  const int big = px(48, s);
-  const int small = px(18, s);
-  const std::string title = "GAME OVER";
-  const std::string detail =
-      std::to_string(world.hits().size()) + " hits in " +
-      format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz);
-  const std::string hint = "R restart    Esc quit";
-  const Eigen::Vector2f t = canvas.textSize(title, big);
-  const float w = std::max(t.x(), canvas.textSize(hint, small).x()) + 80.0f * s;
-  const float hgt = t.y() + 3.0f * small * 1.4f + 40.0f * s;
-  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w),
-                           0.5f * (static_cast<float>(vp.y()) - hgt)};
-  fillRect(canvas, tl, {w, hgt}, {60, 10, 12, 215});
-  canvas.text({tl.x() + 0.5f * (w - t.x()), tl.y() + 18.0f * s}, title, big, {255, 90, 80, 255});
-  float y = tl.y() + 18.0f * s + t.y() + 8.0f * s;
-  for (const std::string& line : {detail, hint}) {
-    const Eigen::Vector2f ls = canvas.textSize(line, small);
-    canvas.text({tl.x() + 0.5f * (w - ls.x()), y}, line, small, kText);
-    y += small * 1.5f;
+void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
+                  const std::vector<std::pair<std::string, std::string>>& summary_rows) {
+  EndPanel panel{"GAME OVER",
+                 {255, 90, 80, 255},
+                 {60, 10, 12, 215},
+                 summary_rows,
+                 "Enter restart    Esc quit"};
+  if (panel.rows.empty()) {
+    panel.rows = {
+        {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
+        {"Hits", std::to_string(world.hits().size())},
+        {"Damage", std::to_string(world.scene().player.health - world.health())}};
   }
+  drawEndPanel(canvas, camera, player_box, panel);
 }
 
 const std::vector<std::pair<std::string, std::string>>& helpKeys() {

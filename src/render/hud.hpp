@@ -39,8 +39,10 @@ float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
 /// The HUD panel at the top left, the status line, PAUSED and the help hint.
 void drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
 
-/// The game-over panel in the middle of the screen.
-void drawGameOver(Canvas& canvas, const World& world);
+/// The game-over panel beside the car (never over it): time, hits and damage, or `summary_rows`
+/// when given (a level's run summary).
+void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
+                  const std::vector<std::pair<std::string, std::string>>& summary_rows = {});
 
 /// Every key and what it does, as the help panel lists them.
 [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& helpKeys();

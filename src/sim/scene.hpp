@@ -2,6 +2,7 @@
 /// A loaded scene: the player's start, the parked cars, obstacles and walls. Plain data.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,41 @@ struct PlayerStart {
   double speed = 0.0;                                  ///< Initial forward speed, m/s.
 };
 
+/// A parking bay: the rectangle the player must park in.
+struct ParkingBay {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();  ///< Centre, world metres.
+  double heading_deg = 0.0;  ///< Direction the parked car should face, degrees CCW from +x.
+  double length = 5.5;       ///< Metres along the heading.
+  double width = 2.6;        ///< Metres across.
+};
+
+/// The parking challenge of a scene (`goal` in the scene file).
+struct Goal {
+  ParkingBay bay;                      ///< Where to park.
+  double position_tolerance = 0.5;     ///< Largest distance between car and bay centres, m.
+  double heading_tolerance_deg = 8.0;  ///< Largest heading error, degrees.
+  bool either_direction = false;       ///< Facing opposite to the bay heading also counts.
+  double max_speed = 0.3;              ///< Largest |speed| that counts as stopped, m/s.
+  std::optional<double> par_time;      ///< Time for three stars, s.
+  std::optional<double> time_limit;    ///< The run ends unparked after this long, s.
+};
+
+/// Marks a scene as a level of the scene picker (`level` in the scene file).
+struct LevelInfo {
+  int order = 1;      ///< Position in the picker, 1 first.
+  std::string title;  ///< Shown in the picker.
+};
+
+/// A painted mark on the ground: drawn, never collides (`markings` in the scene file).
+struct Marking {
+  /// What is painted.
+  enum class Kind : std::uint8_t { kLine, kArrow };
+  Kind kind = Kind::kLine;                         ///< Line or lane arrow.
+  Eigen::Vector2d from = Eigen::Vector2d::Zero();  ///< Line start, or arrow tail.
+  Eigen::Vector2d to = Eigen::Vector2d::Zero();    ///< Line end, or arrow tip.
+  double width = 0.15;                             ///< Paint width, m.
+};
+
 /// Everything a scene file describes.
 struct Scene {
   std::string name;                 ///< Display name.
@@ -42,6 +78,9 @@ struct Scene {
   PlayerStart player;               ///< The player's car.
   std::vector<ParkedCar> parked;    ///< Static cars.
   std::vector<Obstacle> obstacles;  ///< Static convex polygons.
+  std::optional<Goal> goal;         ///< The parking challenge, when the scene has one.
+  std::optional<LevelInfo> level;   ///< Set when the scene is a level of the picker.
+  std::vector<Marking> markings;    ///< Painted lines and arrows (render only).
 };
 
 }  // namespace cardemo

@@ -356,5 +356,35 @@ TEST(ReplayTextErrors, MissingFileReportsLineZero) {
             std::string::npos);
 }
 
+// --- expect parked ---
+
+TEST(ReplayTextParked, FrameAndNeverParseAndRoundTrip) {
+  const Parsed<Replay> at = parse("cardemo-replay 1\n10 U\nexpect parked 812\n");
+  ASSERT_TRUE(at.ok()) << at.error().toString();
+  ASSERT_TRUE(at.value().expect.parked.has_value());
+  EXPECT_EQ(*at.value().expect.parked, 812);
+  EXPECT_NE(formatReplay(at.value()).find("expect parked 812\n"), std::string::npos);
+
+  const Parsed<Replay> never = parse("cardemo-replay 1\nexpect parked never\n");
+  ASSERT_TRUE(never.ok()) << never.error().toString();
+  ASSERT_TRUE(never.value().expect.parked.has_value());
+  EXPECT_FALSE(never.value().expect.parked->has_value());
+  const std::string text = formatReplay(never.value());
+  EXPECT_NE(text.find("expect parked never\n"), std::string::npos);
+  EXPECT_TRUE(parse(text).value().expect.parked.has_value());
+
+  EXPECT_FALSE(parse("cardemo-replay 1\n").value().expect.parked.has_value());
+  EXPECT_EQ(formatExpectations(ReplayExpectations{}).find("parked"), std::string::npos);
+}
+
+TEST(ReplayTextParkedErrors, BadValueAndDuplicate) {
+  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\nexpect parked soon\n"), 2,
+                      "expect parked: expected a frame from 0 to 100000000 or \"never\""));
+  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\nexpect parked -1\n"), 2, "expect parked:"));
+  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\nexpect parked\n"), 2, "expect parked:"));
+  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\nexpect parked 5\nexpect parked never\n"), 3,
+                      "duplicate \"expect parked\" line (first on line 2)"));
+}
+
 }  // namespace
 }  // namespace cardemo

@@ -142,6 +142,21 @@ TEST(SceneJson, BundledScenesParse) {
   }
 }
 
+TEST(SceneJson, BundledLevelsHaveAGoalAndAnOrder) {
+  int order = 0;
+  for (const char* name :
+       {"level-1-straight", "level-2-reverse", "level-3-parallel", "level-4-garage"}) {
+    const Parsed<Scene> p =
+        loadScene(std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/levels/" + name + ".json");
+    ASSERT_TRUE(p.ok()) << p.error().toString();
+    ASSERT_TRUE(p.value().goal.has_value()) << name;
+    ASSERT_TRUE(p.value().level.has_value()) << name;
+    EXPECT_EQ(p.value().level->order, ++order) << name;
+    EXPECT_FALSE(p.value().markings.empty()) << name;
+    EXPECT_FALSE(p.value().obstacles.empty()) << name;
+  }
+}
+
 // --- malformed input, one class per test ---
 
 TEST(SceneJsonErrors, EmptyFile) {
@@ -424,6 +439,169 @@ TEST(SceneJsonErrors, MissingFileReportsLineZero) {
   ASSERT_FALSE(p.ok());
   EXPECT_EQ(p.error().line, 0);
   EXPECT_NE(p.error().message.find("cannot open"), std::string::npos);
+}
+
+// --- goal, level and markings ---
+
+// Line numbers below refer to this text (the base scene's closing brace replaced).
+std::string withGoal(std::string_view goal_lines) {
+  std::string text(kScene);
+  const auto end = text.rfind("]\n}");
+  return text.substr(0, end) + "],\n" + std::string(goal_lines) + "\n}\n";
+}
+
+// Starts on line 22.
+constexpr std::string_view kGoal = R"(  "goal": {
+    "bay": {"x": 20, "y": -5, "heading_deg": 90, "length": 5.5, "width": 2.6},
+    "position_tolerance": 0.4,
+    "heading_tolerance_deg": 6,
+    "either_direction": true,
+    "max_speed": 0.25,
+    "par_time": 15,
+    "time_limit": 60
+  },
+  "level": {"order": 2, "title": "Reverse bay"},
+  "markings": [
+    {"type": "line", "from": [18.7, -7.75], "to": [18.7, -2.25], "width": 0.12},
+    {"type": "arrow", "from": [0, 0], "to": [0, 3]}
+  ])";
+
+TEST(SceneJsonGoal, FullGoalParsesIntoTheRightValues) {
+  const Parsed<Scene> p = parse(withGoal(kGoal));
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  const Scene& s = p.value();
+  ASSERT_TRUE(s.goal.has_value());
+  const Goal& g = *s.goal;
+  EXPECT_EQ(g.bay.center, Eigen::Vector2d(20, -5));
+  EXPECT_EQ(g.bay.heading_deg, 90.0);
+  EXPECT_EQ(g.bay.length, 5.5);
+  EXPECT_EQ(g.bay.width, 2.6);
+  EXPECT_EQ(g.position_tolerance, 0.4);
+  EXPECT_EQ(g.heading_tolerance_deg, 6.0);
+  EXPECT_TRUE(g.either_direction);
+  EXPECT_EQ(g.max_speed, 0.25);
+  EXPECT_EQ(g.par_time, 15.0);
+  EXPECT_EQ(g.time_limit, 60.0);
+  ASSERT_TRUE(s.level.has_value());
+  EXPECT_EQ(s.level->order, 2);
+  EXPECT_EQ(s.level->title, "Reverse bay");
+  ASSERT_EQ(s.markings.size(), 2u);
+  EXPECT_EQ(s.markings[0].kind, Marking::Kind::kLine);
+  EXPECT_EQ(s.markings[0].from, Eigen::Vector2d(18.7, -7.75));
+  EXPECT_EQ(s.markings[0].to, Eigen::Vector2d(18.7, -2.25));
+  EXPECT_EQ(s.markings[0].width, 0.12);
+  EXPECT_EQ(s.markings[1].kind, Marking::Kind::kArrow);
+  EXPECT_EQ(s.markings[1].width, Marking{}.width);
+}
+
+TEST(SceneJsonGoal, SceneWithoutGoalHasNone) {
+  const Parsed<Scene> p = parse(kScene);
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  EXPECT_FALSE(p.value().goal.has_value());
+  EXPECT_FALSE(p.value().level.has_value());
+  EXPECT_TRUE(p.value().markings.empty());
+}
+
+TEST(SceneJsonGoal, OnlyTheBayIsRequired) {
+  const Parsed<Scene> p = parse(withGoal(
+      R"(  "goal": {"bay": {"x": 1, "y": 2, "heading_deg": 0, "length": 5, "width": 2.5}})"));
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  const Goal& g = *p.value().goal;
+  EXPECT_EQ(g.position_tolerance, Goal{}.position_tolerance);
+  EXPECT_EQ(g.heading_tolerance_deg, Goal{}.heading_tolerance_deg);
+  EXPECT_EQ(g.max_speed, Goal{}.max_speed);
+  EXPECT_FALSE(g.either_direction);
+  EXPECT_FALSE(g.par_time.has_value());
+  EXPECT_FALSE(g.time_limit.has_value());
+}
+
+std::string goalWith(std::string_view from, std::string_view to) {
+  return withGoal(replaced(std::string(kGoal), from, to));
+}
+
+TEST(SceneJsonGoalErrors, UnknownKeyInGoal) {
+  EXPECT_TRUE(failsAt(parse(goalWith("\"max_speed\"", "\"max_sped\"")), 27,
+                      "unknown key \"max_sped\" in goal"));
+}
+
+TEST(SceneJsonGoalErrors, UnknownKeyInBay) {
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("\"x\": 20", "\"xx\": 20")), 23, "unknown key \"xx\" in goal.bay"));
+}
+
+TEST(SceneJsonGoalErrors, MissingBay) {
+  EXPECT_TRUE(failsAt(
+      parse(goalWith("\"bay\": {\"x\": 20, \"y\": -5, \"heading_deg\": 90, \"length\": 5.5, "
+                     "\"width\": 2.6},",
+                     "")),
+      22, "goal: missing \"bay\""));
+}
+
+TEST(SceneJsonGoalErrors, BayWidthZero) {
+  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 2.6", "\"width\": 0")), 23,
+                      "goal.bay.width: must be finite and > 0"));
+}
+
+TEST(SceneJsonGoalErrors, ToleranceZeroOrNegative) {
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("0.4", "0")), 24, "goal.position_tolerance: must be finite, > 0"));
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("0.4", "-1")), 24, "goal.position_tolerance: must be finite, > 0"));
+}
+
+TEST(SceneJsonGoalErrors, HeadingToleranceAbove180) {
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("\"heading_tolerance_deg\": 6", "\"heading_tolerance_deg\": 181")), 25,
+              "goal.heading_tolerance_deg: must be finite, > 0 and at most 180"));
+}
+
+TEST(SceneJsonGoalErrors, EitherDirectionMustBeBool) {
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("true", "1")), 26, "goal.either_direction: expected a boolean"));
+}
+
+TEST(SceneJsonGoalErrors, MaxSpeedAndTimesAreValidated) {
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("0.25", "\"slow\"")), 27, "goal.max_speed: expected a number"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 0")), 28,
+                      "goal.par_time: must be finite, > 0"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"time_limit\": 60", "\"time_limit\": 1e6")), 29,
+                      "goal.time_limit: must be finite, > 0 and at most 100000 s"));
+}
+
+TEST(SceneJsonGoalErrors, ParTimeAboveTimeLimit) {
+  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 61")), 28,
+                      "goal.par_time: must not exceed goal.time_limit"));
+}
+
+TEST(SceneJsonLevelErrors, OrderMustBeAPositiveInteger) {
+  for (const char* bad : {"0", "1.5", "-3", "10001"}) {
+    EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2", std::string("\"order\": ") + bad)), 31,
+                        "level.order: must be an integer from 1 to 10000"))
+        << bad;
+  }
+}
+
+TEST(SceneJsonLevelErrors, TitleMustBeShortPrintableText) {
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("\"Reverse bay\"", "\"\"")), 31, "level.title: must be 1 to 64"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"Reverse bay\"", "\"" + std::string(65, 'x') + "\"")), 31,
+                      "level.title: must be 1 to 64"));
+  EXPECT_TRUE(
+      failsAt(parse(goalWith("\"Reverse bay\"", "\"a\\tb\"")), 31, "level.title: must be 1 to 64"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2, ", "")), 31, "level: missing \"order\""));
+}
+
+TEST(SceneJsonMarkingErrors, UnknownTypeMissingPointAndDegenerate) {
+  EXPECT_TRUE(failsAt(parse(goalWith("\"arrow\"", "\"zebra\"")), 34,
+                      "markings[1].type: expected \"line\" or \"arrow\", found \"zebra\""));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"to\": [0, 3]", "\"to\": [0, 0]")), 34,
+                      "markings[1]: from and to must differ"));
+  EXPECT_TRUE(failsAt(parse(goalWith(", \"to\": [0, 3]", "")), 34, "markings[1]: missing \"to\""));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"width\": 11")), 33,
+                      "markings[0].width: must be finite, > 0 and at most 10 m"));
+  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"paint\": 1")), 33,
+                      "unknown key \"paint\" in markings[0]"));
 }
 
 }  // namespace

@@ -1,18 +1,21 @@
 // End-to-end: `cardemo play` under Xvfb driven by xdotool; the recording must replay headless to
-// the same outcome, and a game stopped by SIGINT must leave a valid recording. The help holds the
-// simulation, a restart after GAME OVER keeps both attempts' recordings, WASD and Space drive,
-// and a replay played in the window hands over only when the player drives.
+// the same outcome, a game stopped by SIGINT must leave a valid recording, and level 1 chosen in
+// the scene picker can be driven to PARKED. The help holds the simulation, a restart after GAME
+// OVER keeps both attempts' recordings, WASD and Space drive, and a replay played in the window
+// hands over only when the player drives.
 
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -161,9 +164,16 @@ class PlayE2e : public ::testing::Test {
     fs::remove(fs::temp_directory_path() / ("cardemo_e2e_shell." + std::to_string(getpid())));
   }
 
-  // Starts the game with `args`, then finds its window by pid and focuses it.
-  std::unique_ptr<Child> startGame(const std::vector<std::string>& args, const std::string& log) {
-    std::vector<std::string> argv{CARDEMO_BINARY, "play"};
+  // Starts the game with `args` (and `env` settings, NAME=VALUE), then finds its window by pid and
+  // focuses it.
+  std::unique_ptr<Child> startGame(const std::vector<std::string>& args, const std::string& log,
+                                   const std::vector<std::string>& env = {}) {
+    std::vector<std::string> argv;
+    if (!env.empty()) {
+      argv.emplace_back("env");
+      argv.insert(argv.end(), env.begin(), env.end());
+    }
+    argv.insert(argv.end(), {CARDEMO_BINARY, "play"});
     argv.insert(argv.end(), args.begin(), args.end());
     auto game = std::make_unique<Child>(argv, display_, dir_ / log);
     std::string windows;
@@ -202,11 +212,13 @@ nlohmann::json loadJson(const std::string& text) {
   return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
 }
 
+const std::string kLot = std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/parking-lot.json";
+
 TEST_F(PlayE2e, DriveIntoTheCarAheadThenReplayHeadless) {
   const fs::path record = dir_ / "drive.replay";
   const fs::path json = dir_ / "drive.json";
-  auto game =
-      startGame({"--record", record.string(), "--json", json.string(), "--progress"}, "play.log");
+  auto game = startGame({kLot, "--record", record.string(), "--json", json.string(), "--progress"},
+                        "play.log");
   ASSERT_TRUE(game->running()) << slurp(dir_ / "play.log");
   // Full throttle from (-45, 0) reaches E1 at x = 50 in about 7 s of game time. The key is held
   // until the game itself reports 9.5 s of frames (--progress prints each frame on the log), not
@@ -249,7 +261,7 @@ TEST_F(PlayE2e, DriveIntoTheCarAheadThenReplayHeadless) {
 
 TEST_F(PlayE2e, SigintMidDriveLeavesAValidRecording) {
   const fs::path record = dir_ / "interrupted.replay";
-  auto game = startGame({"--record", record.string()}, "play.log");
+  auto game = startGame({kLot, "--record", record.string()}, "play.log");
   ASSERT_TRUE(game->running()) << slurp(dir_ / "play.log");
   shell(display_, "xdotool keydown Up");
   std::this_thread::sleep_for(2s);
@@ -310,7 +322,7 @@ nlohmann::json replayHeadless(const fs::path& replay, const fs::path& scratch) {
 
 TEST_F(PlayE2e, HelpHoldsTheSimulation) {
   const fs::path log = dir_ / "play.log";
-  auto game = startGame({"--progress"}, "play.log");
+  auto game = startGame({kLot, "--progress"}, "play.log");
   ASSERT_TRUE(game->running()) << slurp(log);
   ASSERT_TRUE(waitForFrame(log, 30, 60s)) << "the game did not advance";
   shell(display_, "xdotool key F1");
@@ -334,8 +346,7 @@ TEST_F(PlayE2e, HelpHoldsTheSimulation) {
 TEST_F(PlayE2e, RestartAfterGameOverKeepsBothRecordings) {
   // The parking lot with one health point and the car already moving at 20 m/s: it ends against
   // the first car ahead with no key pressed.
-  nlohmann::json scene =
-      nlohmann::json::parse(slurp(fs::path(CARDEMO_SOURCE_DIR) / "assets/scenes/parking-lot.json"));
+  nlohmann::json scene = nlohmann::json::parse(slurp(kLot));
   scene["player"]["health"] = 1;
   scene["player"]["speed"] = 20;
   const fs::path scene_path = dir_ / "fragile.json";
@@ -392,8 +403,8 @@ TEST_F(PlayE2e, WasdDrivesAndSpaceIsTheHandbrake) {
   const fs::path record = dir_ / "wasd.replay";
   const fs::path json = dir_ / "wasd.json";
   const fs::path log = dir_ / "play.log";
-  auto game =
-      startGame({"--record", record.string(), "--json", json.string(), "--progress"}, "play.log");
+  auto game = startGame({kLot, "--record", record.string(), "--json", json.string(), "--progress"},
+                        "play.log");
   ASSERT_TRUE(game->running()) << slurp(log);
   ASSERT_TRUE(waitForFrame(log, 10, 60s));
   // Each key is held until the game has stepped a second with it (frames, not wall-clock time).
@@ -441,6 +452,116 @@ TEST_F(PlayE2e, AfterAReplayTheGameWaitsForThePlayer) {
   EXPECT_TRUE(waitForFrame(log, 180, 60s)) << "a driving key did not hand over";
   shell(display_, "xdotool key Escape");
   EXPECT_EQ(game->wait(10s), 0) << slurp(log);
+}
+
+// Level 1 from the scene picker, driven frame by frame: paused (P), each frame stepped with N while
+// the keys of the level's golden replay are held, so the drive is the replay's whatever the load.
+class LevelE2e : public PlayE2e {
+ protected:
+  std::int64_t frame() { return std::max<std::int64_t>(0, lastFrame(dir_ / "play.log")); }
+
+  // Steps single frames (N) until the game has simulated `target` frames or `stop` holds.
+  ::testing::AssertionResult stepTo(std::int64_t target, const std::function<bool()>& stop = {}) {
+    while (frame() < target && !(stop && stop())) {
+      const std::int64_t before = frame();
+      shell(display_, "xdotool key n");
+      const auto end = std::chrono::steady_clock::now() + 10s;
+      while (frame() == before && std::chrono::steady_clock::now() < end && !(stop && stop())) {
+        std::this_thread::sleep_for(2ms);
+      }
+      if (frame() == before && !(stop && stop())) {
+        return ::testing::AssertionFailure() << "N did not step frame " << before;
+      }
+    }
+    return ::testing::AssertionSuccess();
+  }
+
+  // Holds `key` (an xdotool key name, or empty) for `frames` stepped frames, or until `stop`.
+  ::testing::AssertionResult hold(const std::string& key, std::int64_t frames,
+                                  const std::function<bool()>& stop = {}) {
+    if (!key.empty()) shell(display_, "xdotool keydown " + key);
+    ::testing::AssertionResult ok = stepTo(frame() + frames, stop);
+    if (!key.empty()) shell(display_, "xdotool keyup " + key);
+    return ok;
+  }
+};
+
+TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
+  const cardemo::Parsed<cardemo::Replay> golden = cardemo::loadReplay(
+      std::string(CARDEMO_SOURCE_DIR) + "/assets/replays/level-1-straight.replay");
+  ASSERT_TRUE(golden.ok()) << golden.error().toString();
+  const auto& runs = golden.value().runs;
+  ASSERT_GE(runs.size(), 3u);
+  ASSERT_TRUE(runs[0].keys.up && runs[2].keys.down) << "level 1's replay changed shape";
+
+  const fs::path record = dir_ / "level1.replay";
+  const fs::path json = dir_ / "level1.json";
+  const fs::path xdg = dir_ / "xdg";
+  auto game =
+      startGame({"--record", record.string(), "--json", json.string(), "--progress"}, "play.log",
+                {"CARDEMO_ASSETS=" + std::string(CARDEMO_SOURCE_DIR) + "/assets",
+                 "XDG_DATA_HOME=" + xdg.string()});
+  ASSERT_TRUE(game->running()) << slurp(dir_ / "play.log");
+  // The picker lists level 1 first: Enter opens it in the game window.
+  shell(display_, "xdotool key Return");
+  std::string windows;
+  const auto end = std::chrono::steady_clock::now() + 30s;
+  while (std::chrono::steady_clock::now() < end && game->running() &&
+         (shell(display_, "xdotool search --onlyvisible --name level-1-straight", &windows) != 0 ||
+          windows.empty())) {
+    std::this_thread::sleep_for(100ms);
+  }
+  ASSERT_FALSE(windows.empty()) << "no level 1 window: " << slurp(dir_ / "play.log");
+  const std::string window = windows.substr(0, windows.find('\n'));
+  bool focused = false;
+  const auto focus_end = std::chrono::steady_clock::now() + 60s;
+  while (!focused && std::chrono::steady_clock::now() < focus_end) {
+    focused = shell(display_, "timeout 5 xdotool windowfocus --sync " + window) == 0;
+    if (!focused) std::this_thread::sleep_for(100ms);
+  }
+  ASSERT_TRUE(focused);
+  // Pause, then let the pause settle: frames run before it are idle (no key), which only delays
+  // the start.
+  shell(display_, "xdotool key p");
+  std::this_thread::sleep_for(500ms);
+  const std::int64_t idle = frame();
+  std::this_thread::sleep_for(300ms);
+  ASSERT_EQ(frame(), idle) << "the game did not pause";
+
+  const auto parked = [&] {
+    const nlohmann::json j = loadJson(slurp(json));
+    return j.is_object() && j.contains("parked") && !j["parked"].is_null();
+  };
+  ASSERT_TRUE(hold("Up", runs[0].count));
+  ASSERT_TRUE(hold("", runs[1].count));
+  ASSERT_TRUE(hold("Down", runs[2].count + 60, parked));
+  ASSERT_TRUE(parked()) << "not parked by frame " << frame() << ": " << slurp(json);
+  shell(display_, "xdotool key Escape");
+  ASSERT_EQ(game->wait(10s), 0) << slurp(dir_ / "play.log");
+
+  const nlohmann::json live = loadJson(slurp(json));
+  ASSERT_TRUE(live.is_object());
+  EXPECT_EQ(live["scene"], "level-1-straight");
+  const std::int64_t golden_parked = *golden.value().expect.parked.value();
+  EXPECT_EQ(live["parked"].get<std::int64_t>(), idle + golden_parked) << live.dump();
+  EXPECT_EQ(live["frames"], live["parked"]) << "the game stops stepping once parked";
+  EXPECT_EQ(live["score"]["damage"], 0);
+  EXPECT_EQ(live["score"]["frames"], live["parked"]);
+  EXPECT_GE(live["score"]["stars"].get<int>(), 2);
+
+  std::string out;
+  ASSERT_EQ(shell("", std::string(CARDEMO_BINARY) + " replay " + record.string() + " --json -",
+                  &out, dir_ / "replay.out"),
+            0);
+  const nlohmann::json headless = loadJson(out);
+  ASSERT_TRUE(headless.is_object()) << out;
+  EXPECT_EQ(headless["hash"], live["hash"]);
+  EXPECT_EQ(headless["parked"], live["parked"]);
+  EXPECT_EQ(headless["score"], live["score"]);
+  // The score was saved as the best.
+  const nlohmann::json best = loadJson(slurp(xdg / "cardemo" / "best-scores.json"));
+  ASSERT_TRUE(best.is_object()) << "no best-scores file";
+  EXPECT_EQ(best["scenes"]["level-1-straight"]["frames"], live["parked"]);
 }
 
 TEST(PlayNoDisplay, SaysSoAndExitsOne) {

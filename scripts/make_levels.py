@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Builds the parking levels (assets/scenes/levels/*.json) and their golden replays
+(assets/replays/level-*.replay) from scripted manoeuvres.
+
+Each manoeuvre is a list of (KEYS, until) steps: `until` is a frame count, or a condition on the
+trace row (heading reached, speed through zero, ...) that cardemo finds by running the replay so
+far with --trace. The manoeuvre is first driven in an empty scene from the origin; the level is
+then built around its end pose (the bay where the car stops, the player's start that distance
+before it), so the replay parks whatever the car physics. Run it again after a physics change and
+re-check the hits and parked frames it prints.
+
+usage: scripts/make_levels.py CARDEMO_BINARY
+"""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "assets")
+CARDEMO = None
+TMP = tempfile.mkdtemp(prefix="cardemo-levels-")
+EMPTY = os.path.join(TMP, "empty.json")
+
+
+def run(scene, inputs):
+    path = os.path.join(TMP, "m.replay")
+    with open(path, "w") as f:
+        f.write("cardemo-replay 1\nscene %s\nhz 120\n%s\n" % (scene, "\n".join(inputs)))
+    trace = os.path.join(TMP, "m.csv")
+    subprocess.run([CARDEMO, "replay", path, "--trace", trace], capture_output=True, check=True)
+    with open(trace) as f:
+        return list(csv.DictReader(f))
+
+
+def f(row, key):
+    return float(row[key])
+
+
+def plan(steps, tail=60):
+    fixed = []
+    for keys, until in steps:
+        if isinstance(until, int):
+            fixed.append("%d %s" % (until, keys))
+            continue
+        rows = run(EMPTY, fixed + ["3000 " + keys])
+        n = sum(int(s.split()[0]) for s in fixed)
+        k = next((i - n for i in range(n + 1, len(rows)) if until(rows[i])), None)
+        if k is None:
+            sys.exit("make_levels: %s never meets its condition after %s" % (keys, fixed))
+        fixed.append("%d %s" % (k, keys))
+    fixed.append("%d ." % tail)
+    return fixed, run(EMPTY, fixed)[-1]
+
+def box(cx,cy,hx,hy):  # axis-aligned rectangle polygon, half extents
+    return [[r(cx-hx),r(cy-hy)],[r(cx+hx),r(cy-hy)],[r(cx+hx),r(cy+hy)],[r(cx-hx),r(cy+hy)]]
+def r(v): return round(v,3)
+def car(i,x,y,h): return {"id":i,"x":r(x),"y":r(y),"heading_deg":h,"length":4.4,"width":1.8}
+def line(a,b,w=0.12): return {"type":"line","from":[r(a[0]),r(a[1])],"to":[r(b[0]),r(b[1])],"width":w}
+def arrow(a,b): return {"type":"arrow","from":[r(a[0]),r(a[1])],"to":[r(b[0]),r(b[1])],"width":0.3}
+
+def scene(name, order, title, start, bay, goal, parked, obstacles, markings, bounds):
+    g={"bay":{"x":r(bay[0]),"y":r(bay[1]),"heading_deg":bay[2],"length":bay[3],"width":bay[4]}}
+    g.update(goal)
+    return {"format":"cardemo-scene/1","name":name,"level":{"order":order,"title":title},
+            "bounds":{"min":bounds[0],"max":bounds[1]},
+            "player":{"x":r(start[0]),"y":r(start[1]),"heading_deg":0,"length":4.5,"width":1.8,"health":100},
+            "goal":g,"parked":parked,"obstacles":obstacles,"markings":markings}
+
+def dump(obj):
+    # one line per array element for readability
+    lines=['{']
+    items=list(obj.items())
+    for k,(key,v) in enumerate(items):
+        comma=',' if k<len(items)-1 else ''
+        if isinstance(v,list):
+            lines.append('  "%s": ['%key)
+            for j,e in enumerate(v):
+                lines.append('    '+json.dumps(e)+(',' if j<len(v)-1 else ''))
+            lines.append('  ]'+comma)
+        else:
+            lines.append('  "%s": %s%s'%(key,json.dumps(v),comma))
+    lines.append('}')
+    return '\n'.join(lines)+'\n'
+
+def build(lv):
+    fx,end=plan(lv['steps'])
+    D=(f(end,'x'),f(end,'y')); H=f(end,'heading_deg')
+    B=lv['bay']
+    S=(B[0]-D[0],B[1]-D[1])
+    sc=lv['make'](S,B)
+    path='%s/scenes/levels/%s.json'%(OUT,lv['file'])
+    open(path,'w').write(dump(sc))
+    rp='%s/replays/%s.replay'%(OUT,lv['file'])
+    body='cardemo-replay 1\n# %s\nscene ../scenes/levels/%s.json\nhz 120\n%s\n'%(lv['comment'],lv['file'],'\n'.join(fx))
+    open(rp,'w').write(body)
+    out=subprocess.run([CARDEMO,'replay',rp,'--print-expect'],capture_output=True,text=True)
+    exp=[l for l in out.stdout.splitlines() if l.startswith('expect')]
+    print(out.stdout + out.stderr)
+    open(rp,'w').write(body+'# Expectations (regenerate with: cardemo replay THIS --print-expect)\n'+'\n'.join(exp)+'\n')
+
+def make1(S,B):
+    bx,by=B[0],B[1]
+    parked=[car('N1',bx,by+2.6,0),car('N2',bx,by+5.2,180),car('S1',bx,by-2.6,180),car('S2',bx,by-5.2,0)]
+    obstacles=[{"id":"back-wall","points":box(bx+3.55,by,0.2,8.0)}]
+    mk=[line((bx-2.75,by+y),(bx+2.75,by+y)) for y in (-6.5,-3.9,-1.3,1.3,3.9,6.5)]
+    mk.append(line((bx+2.75,by-6.5),(bx+2.75,by+6.5)))
+    mk.append(arrow((S[0]+4,S[1]),(S[0]+8,S[1])))
+    return scene('level-1-straight',1,'Straight in',S,(bx,by,0,5.5,2.6),
+      {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
+      parked,obstacles,mk,[[r(S[0]-6),by-10],[bx+6,by+10]])
+LEVEL1={'file':'level-1-straight','bay':(0.0,0.0),'make':make1,'comment':'Level 1: drive straight into the bay ahead and stop.',
+    'steps':[('U',120),('.',lambda r:f(r,'x')>12.9),('D',lambda r:f(r,'speed')<=0),('.',30)]}
+
+def make2(S,B):
+    bx,by=B[0],B[1]
+    parked=[car('W1',bx-2.7,by,270),car('W2',bx-5.4,by,90),car('E1',bx+2.7,by,90),car('E2',bx+5.4,by,270),
+            car('X1',bx-4.0,S[1]-6.0,90),car('X2',bx+1.5,S[1]-6.0,270),car('X3',bx+6.8,S[1]-6.0,90)]
+    obstacles=[{"id":"back-wall","points":box(bx,by+3.35,9.0,0.2)}]
+    mk=[line((bx+x,by-2.75),(bx+x,by+2.75)) for x in (-6.75,-4.05,-1.35,1.35,4.05,6.75)]
+    mk.append(arrow((S[0]-6,S[1]),(S[0]-2,S[1])))
+    return scene('level-2-reverse',2,'Reverse bay',S,(bx,by,270,5.5,2.6),
+      {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":90},
+      parked,obstacles,mk,[[r(S[0]-14),r(S[1]-10)],[bx+12,by+5]])
+LEVEL2={'file':'level-2-reverse','bay':(0.0,5.0),'make':make2,'comment':'Level 2: drive past the bay, stop, reverse in on full left lock, straighten, stop.',
+    'steps':[('U',100),('D',lambda r:f(r,'speed')<=0),('DL',90),('L',lambda r:f(r,'heading_deg')<-87.5),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('D',40),('.',60),('U',lambda r:f(r,'speed')>=0),('.',30)]}
+
+def make3(S,B):
+    bx,by=B[0],B[1]
+    parked=[car('F1',bx+6.6,by,0),car('F2',bx+6.6+5.6,by,0),car('R1',bx-5.3,by,0),car('R2',bx-11.0,by,0),
+            car('O1',bx-6.0,by+7.6,180),car('O2',bx+3.0,by+7.6,180)]
+    obstacles=[{"id":"kerb","points":box(bx,by-1.8,16.0,0.2)},
+               {"id":"building","points":box(bx,by+10.4,16.0,0.3)}]
+    mk=[line((bx-13.8,by+1.2),(bx+13.8,by+1.2)),
+        line((bx-3.05,by-1.2),(bx-3.05,by+1.2)),line((bx+6.6-2.25,by-1.2),(bx+6.6-2.25,by+1.2)),
+        line((bx-13.8,by+6.4),(bx+13.8,by+6.4)),
+        line((bx-13.8,by+3.8),(bx-11.8,by+3.8)),line((bx-9.8,by+3.8),(bx-7.8,by+3.8)),
+        line((bx-5.8,by+3.8),(bx-3.8,by+3.8)),line((bx-1.8,by+3.8),(bx+0.2,by+3.8)),
+        line((bx+2.2,by+3.8),(bx+4.2,by+3.8)),line((bx+6.2,by+3.8),(bx+8.2,by+3.8)),
+        line((bx+10.2,by+3.8),(bx+12.2,by+3.8)),
+        arrow((S[0]-4,S[1]),(S[0],S[1]))]
+    return scene('level-3-parallel',3,'Parallel parking',S,(bx,by,0,5.5,2.2),
+      {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":120},
+      parked,obstacles,mk,[[bx-16,by-2.5],[bx+16,by+11]])
+LEVEL3={'file':'level-3-parallel','bay':(0.0,0.0),'make':make3,'comment':'Level 3: stop beside the front car, reverse on right lock, straighten, then left lock into the space.',
+    'steps':[('U',90),('D',lambda r:f(r,'speed')<=0),('DR',70),('R',lambda r:f(r,'heading_deg')>42),('D',20),('.',60),('DL',20),('L',lambda r:f(r,'heading_deg')<2.5),('U',lambda r:f(r,'speed')>=0),('.',30)]}
+
+def make4(S,B):
+    bx,by=B[0],B[1]
+    inner=1.25      # half the garage's inner width: 2.5 m for a 1.8 m car
+    door=by-2.75    # door line; the back wall is 0.25 m behind the parked car's nose
+    back=by+2.5
+    obstacles=[{"id":"garage-left","points":box(bx-inner-0.15,(door+back)/2,0.15,(back-door)/2)},
+               {"id":"garage-right","points":box(bx+inner+0.15,(door+back)/2,0.15,(back-door)/2)},
+               {"id":"garage-back","points":box(bx,back+0.15,inner+0.3,0.15)},
+               {"id":"next-garage-left","points":box(bx-4.0,(door+back)/2,1.6,(back-door)/2+0.15)},
+               {"id":"next-garage-right","points":box(bx+4.0,(door+back)/2,1.6,(back-door)/2+0.15)},
+               {"id":"hedge","points":box(((S[0]-10)+(bx+9))/2,S[1]-4.2,((bx+9)-(S[0]-10))/2,0.4)}]
+    parked=[car('V1',S[0]-6,S[1]-2.0,0)]
+    mk=[line((bx-inner,door),(bx+inner,door),0.2),
+        line((bx,door-1.0),(bx,door-0.2),0.1),
+        arrow((S[0]+1,S[1]-2.0),(S[0]+5,S[1]-2.0))]
+    return scene('level-4-garage',4,'Tight garage',S,(bx,by,90,5.25,2.5),
+      {"position_tolerance":0.3,"heading_tolerance_deg":5,"max_speed":0.3,"par_time":14,"time_limit":90},
+      parked,obstacles,mk,[[r(S[0]-10),r(S[1]-5)],[r(bx+9),r(back+1)]])
+LEVEL4={'file':'level-4-garage','bay':(0.0,0.0),'make':make4,'comment':'Level 4: follow the lane, turn in on full left lock, straighten on the centre line, stop short of the back wall.',
+    'steps':[('U',60),('.',100),('L',lambda r:f(r,'heading_deg')>89.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('U',40),('.',lambda r:f(r,'y')>8.9),('D',lambda r:f(r,'speed')<=0),('.',30)]}
+
+
+def main():
+    global CARDEMO
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    CARDEMO = os.path.abspath(sys.argv[1])
+    with open(EMPTY, "w") as f:
+        json.dump({"format": "cardemo-scene/1", "name": "empty", "parked": [],
+                   "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8}}, f)
+    os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
+    try:
+        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4):
+            build(level)
+    finally:
+        shutil.rmtree(TMP, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()

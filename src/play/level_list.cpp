@@ -1,0 +1,48 @@
+#include "play/level_list.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+#include <tuple>
+
+#include "io/scene_json.hpp"
+
+namespace cardemo {
+
+std::vector<LevelEntry> listLevels(const std::string& assets_folder,
+                                   std::vector<std::string>& warnings) {
+  namespace fs = std::filesystem;
+  std::vector<LevelEntry> levels;
+  const fs::path folder = fs::path(assets_folder) / "scenes" / "levels";
+  std::error_code ec;
+  std::vector<fs::path> files;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() == ".json") files.push_back(it->path());
+  }
+  for (const fs::path& file : files) {
+    const Parsed<Scene> scene = loadScene(file.string());
+    if (!scene.ok()) {
+      warnings.push_back(scene.error().toString());
+      continue;
+    }
+    if (!scene.value().level) continue;
+    levels.push_back({file.lexically_normal().string(), scene.value().level->title,
+                      scene.value().name, scene.value().level->order, false});
+  }
+  std::sort(levels.begin(), levels.end(), [](const LevelEntry& a, const LevelEntry& b) {
+    return std::tie(a.order, a.title, a.path) < std::tie(b.order, b.title, b.path);
+  });
+  const fs::path lot = fs::path(assets_folder) / "scenes" / "parking-lot.json";
+  if (fs::is_regular_file(lot, ec)) {
+    levels.push_back({lot.lexically_normal().string(), "Free drive", "parking-lot", 0, true});
+  }
+  return levels;
+}
+
+int moveSelection(int selected, int delta, int count) {
+  if (count <= 0) return 0;
+  const int moved = (selected + delta) % count;
+  return moved < 0 ? moved + count : moved;
+}
+
+}  // namespace cardemo

@@ -1,0 +1,27 @@
+#pragma once
+/// The scenes the picker of `cardemo play` offers: the bundled levels in order, then free drive.
+
+#include <string>
+#include <vector>
+
+namespace cardemo {
+
+/// One scene the picker lists.
+struct LevelEntry {
+  std::string path;         ///< Scene file.
+  std::string title;        ///< Shown in the picker.
+  std::string scene_name;   ///< The scene's `name` (the key of its best score).
+  int order = 0;            ///< `level.order`; 0 for free drive.
+  bool free_drive = false;  ///< The free-drive lot (no goal).
+};
+
+/// The scenes with a `level` object in `ASSETS/scenes/levels/*.json`, sorted by order, then title,
+/// then file name, followed by the free-drive lot `ASSETS/scenes/parking-lot.json` when it exists.
+/// A level file that does not load is left out with a one-line warning in `warnings`.
+[[nodiscard]] std::vector<LevelEntry> listLevels(const std::string& assets_folder,
+                                                 std::vector<std::string>& warnings);
+
+/// `selected` moved by `delta` rows in a list of `count`, wrapping at both ends (0 when empty).
+[[nodiscard]] int moveSelection(int selected, int delta, int count);
+
+}  // namespace cardemo

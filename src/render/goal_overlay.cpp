@@ -1,0 +1,140 @@
+#include "render/goal_overlay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/end_panel.hpp"
+#include "render/hud.hpp"
+#include "render/shapes.hpp"
+
+namespace cardemo {
+namespace {
+
+constexpr Rgba kTarget{255, 214, 70, 255};
+constexpr Rgba kTargetReady{90, 230, 120, 255};
+constexpr Rgba kPanel{12, 14, 18, 190};
+constexpr Rgba kText{235, 238, 242};
+constexpr Rgba kDim{160, 168, 178};
+
+Obb2 bayBox(const Goal& goal) {
+  return Obb2::fromDegrees(goal.bay.center, goal.bay.heading_deg, goal.bay.length, goal.bay.width);
+}
+
+std::string scoreText(const ParkingScore& s) {
+  return secondsText(s.seconds) + "  " + starsText(s.stars);
+}
+
+void drawTimer(Canvas& canvas, const ParkingChallenge& challenge, double distance) {
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
+  const int big = static_cast<int>(std::lround(26.0f * s));
+  const int small = static_cast<int>(std::lround(14.0f * s));
+  const float pad = 10.0f * s;
+  const Goal& goal = challenge.goal();
+  const std::string time = secondsText(challenge.seconds());
+  std::string detail;
+  if (goal.par_time) detail = "par " + secondsText(*goal.par_time);
+  if (goal.time_limit) {
+    const double left = std::max(0.0, *goal.time_limit - challenge.seconds());
+    detail += (detail.empty() ? "" : "   ") + std::string("left ") + secondsText(left);
+  }
+  char bay[48];
+  std::snprintf(bay, sizeof bay, "bay %.1f m", distance);
+  detail += (detail.empty() ? "" : "   ") + std::string(bay);
+  const Eigen::Vector2f ts = canvas.textSize(time, big);
+  const Eigen::Vector2f ds = canvas.textSize(detail, small);
+  const float w = std::max(ts.x(), ds.x()) + 2.0f * pad;
+  const float h = ts.y() + ds.y() + 2.2f * pad;
+  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w), 12.0f * s};
+  fillRect(canvas, tl, {w, h}, kPanel);
+  canvas.text({tl.x() + 0.5f * (w - ts.x()), tl.y() + pad}, time, big, kText);
+  canvas.text({tl.x() + 0.5f * (w - ds.x()), tl.y() + pad * 1.2f + ts.y()}, detail, small, kDim);
+}
+
+}  // namespace
+
+std::string starsText(int stars) {
+  std::string out;
+  for (int i = 0; i < 3; ++i) out += i < stars ? "\xE2\x98\x85" : "\xE2\x98\x86";
+  return out;
+}
+
+std::string secondsText(double seconds) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", seconds);
+  return buf;
+}
+
+std::vector<std::pair<std::string, std::string>> runSummaryRows(const World& world,
+                                                                const GoalView& view) {
+  std::vector<std::pair<std::string, std::string>> rows;
+  const ParkingChallenge& c = *view.challenge;
+  const std::optional<ParkingScore> score = c.score();
+  rows.emplace_back("Time", secondsText(score ? score->seconds : c.seconds()));
+  const int damage = world.scene().player.health - world.health();
+  rows.emplace_back("Damage", std::to_string(score ? score->damage : damage));
+  rows.emplace_back("Stars", starsText(score ? score->stars : 0));
+  if (view.new_best) {
+    rows.emplace_back("Best", "new best!");
+  } else if (view.best) {
+    rows.emplace_back("Best", scoreText(*view.best));
+  } else {
+    rows.emplace_back("Best", "none yet");
+  }
+  return rows;
+}
+
+std::optional<Eigen::Vector2f> edgeAnchor(const Eigen::Vector2i& viewport,
+                                          const Eigen::Vector2f& target, float margin) {
+  const Eigen::Vector2f half = 0.5f * viewport.cast<float>();
+  const Eigen::Vector2f d = target - half;
+  const float hx = std::max(1.0f, half.x() - margin);
+  const float hy = std::max(1.0f, half.y() - margin);
+  const float t = std::max(std::abs(d.x()) / hx, std::abs(d.y()) / hy);
+  if (t <= 1.0f) return std::nullopt;
+  return half + d / t;
+}
+
+void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
+                     const Obb2& player_box, const GoalView& view) {
+  const ParkingChallenge& c = *view.challenge;
+  const Goal& goal = c.goal();
+  const float s = hudScale(canvas.size());
+  const Rgba color = c.lastCheck().position_ok && c.lastCheck().heading_ok ? kTargetReady : kTarget;
+  const std::array<Eigen::Vector2f, 4> bay = projectObb(camera, bayBox(goal));
+  outline(canvas, bay, std::max(2.0f, 2.5f * s), color);
+
+  const Eigen::Vector2f target = camera.toScreen(goal.bay.center);
+  const float margin = 48.0f * s;
+  if (const std::optional<Eigen::Vector2f> at = edgeAnchor(canvas.size(), target, margin)) {
+    const Eigen::Vector2f dir = (target - *at).normalized();
+    arrow(canvas, *at - 30.0f * s * dir, *at + 6.0f * s * dir, 5.0f * s, 16.0f * s, kTarget);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f m", c.lastCheck().distance);
+    const int h = static_cast<int>(std::lround(15.0f * s));
+    const Eigen::Vector2f ts = canvas.textSize(text, h);
+    const Eigen::Vector2f label = *at - 30.0f * s * dir - 0.5f * ts - 14.0f * s * dir;
+    fillRect(canvas, label - Eigen::Vector2f{4.0f, 2.0f}, ts + Eigen::Vector2f{8.0f, 4.0f}, kPanel);
+    canvas.text(label, text, h, kTarget);
+  }
+  drawTimer(canvas, c, c.lastCheck().distance);
+
+  if (c.parkedFrame()) {
+    drawEndPanel(canvas, camera, player_box,
+                 {"PARKED",
+                  kTargetReady,
+                  {10, 40, 20, 215},
+                  runSummaryRows(world, view),
+                  "Enter restart    Esc quit"});
+  } else if (c.timedOut()) {
+    drawEndPanel(canvas, camera, player_box,
+                 {"TIME UP",
+                  {255, 90, 80, 255},
+                  {60, 10, 12, 215},
+                  runSummaryRows(world, view),
+                  "Enter restart    Esc quit"});
+  }
+}
+
+}  // namespace cardemo

@@ -1,0 +1,20 @@
+#pragma once
+/// The scene picker of `cardemo play` drawn through a Canvas (no SDL here).
+
+#include <string>
+#include <vector>
+
+#include "render/canvas.hpp"
+
+namespace cardemo {
+
+/// One row of the picker.
+struct PickerRow {
+  std::string title;   ///< e.g. "1  Straight in".
+  std::string detail;  ///< e.g. the best score, right-aligned.
+};
+
+/// Draws the picker: a title, the rows with `selected` highlighted, and the keys.
+void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int selected);
+
+}  // namespace cardemo

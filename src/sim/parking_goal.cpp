@@ -1,0 +1,73 @@
+#include "sim/parking_goal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geometry/angle.hpp"
+#include "sim/world.hpp"
+
+namespace cardemo {
+
+ParkingCheck checkParking(const Goal& goal, const Eigen::Vector2d& position,
+                          const Eigen::Vector2d& direction, double speed) {
+  ParkingCheck c;
+  c.distance = (position - goal.bay.center).norm();
+  const Eigen::Vector2d bay_dir = unitFromDegrees(goal.bay.heading_deg);
+  const double cross = bay_dir.x() * direction.y() - bay_dir.y() * direction.x();
+  const double dot = bay_dir.dot(direction);
+  double error = std::abs(std::atan2(cross, dot)) * (180.0 / std::numbers::pi);
+  if (goal.either_direction) error = std::min(error, 180.0 - error);
+  c.heading_error_deg = error;
+  c.position_ok = c.distance <= goal.position_tolerance;
+  c.heading_ok = error <= goal.heading_tolerance_deg;
+  c.speed_ok = std::abs(speed) <= goal.max_speed;
+  return c;
+}
+
+bool ParkingScore::betterThan(const ParkingScore& other) const {
+  if (stars != other.stars) return stars > other.stars;
+  if (seconds != other.seconds) return seconds < other.seconds;
+  return damage < other.damage;
+}
+
+int starsFor(const Goal& goal, double seconds, int damage) {
+  const bool within_par = !goal.par_time || seconds <= *goal.par_time;
+  return 1 + (damage == 0 ? 1 : 0) + (within_par ? 1 : 0);
+}
+
+std::optional<std::int64_t> limitFrames(const Goal& goal, double hz) {
+  if (!goal.time_limit) return std::nullopt;
+  return static_cast<std::int64_t>(std::ceil(*goal.time_limit * hz));
+}
+
+ParkingChallenge::ParkingChallenge(const Goal& goal, double hz, int start_health)
+    : goal_(goal), hz_(hz), start_health_(start_health), limit_frames_(limitFrames(goal, hz)) {}
+
+void ParkingChallenge::observe(const World& world) {
+  if (over()) return;
+  frames_ = world.frame();
+  const CarState& car = world.car();
+  last_ = checkParking(goal_, car.position, car.direction, car.speed);
+  if (world.gameOver()) {
+    wrecked_ = true;
+    return;
+  }
+  if (last_.parked()) {
+    parked_frame_ = frames_;
+    ParkingScore s;
+    s.frames = frames_;
+    s.seconds = seconds();
+    s.damage = start_health_ - world.health();
+    s.stars = starsFor(goal_, s.seconds, s.damage);
+    score_ = s;
+    return;
+  }
+  if (limit_frames_ && frames_ >= *limit_frames_) timed_out_ = true;
+}
+
+double ParkingChallenge::seconds() const {
+  return static_cast<double>(frames_) / hz_;
+}
+
+}  // namespace cardemo

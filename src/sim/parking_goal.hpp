@@ -1,0 +1,91 @@
+#pragma once
+/// The parking challenge: whether the car is parked in the goal bay, the timer and the score.
+/// Observes a World after each step and never changes it (the state hash does not include it).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+
+#include "sim/scene.hpp"
+
+namespace cardemo {
+
+class World;
+
+/// How far the car is from being parked at one instant.
+struct ParkingCheck {
+  double distance = 0.0;           ///< Between the car's centre and the bay's, m.
+  double heading_error_deg = 0.0;  ///< Heading difference, degrees in [0, 180] (or [0, 90] when
+                                   ///< either direction counts).
+  bool position_ok = false;        ///< distance <= position_tolerance.
+  bool heading_ok = false;         ///< heading_error_deg <= heading_tolerance_deg.
+  bool speed_ok = false;           ///< |speed| <= max_speed.
+
+  /// All three hold: the car is parked.
+  [[nodiscard]] bool parked() const { return position_ok && heading_ok && speed_ok; }
+};
+
+/// Checks a car pose (centre, unit heading direction, signed speed) against a goal.
+[[nodiscard]] ParkingCheck checkParking(const Goal& goal, const Eigen::Vector2d& position,
+                                        const Eigen::Vector2d& direction, double speed);
+
+/// The result of a run against a goal.
+struct ParkingScore {
+  std::int64_t frames = 0;  ///< Frame at which the car parked.
+  double seconds = 0.0;     ///< frames / hz.
+  int damage = 0;           ///< Health lost up to that frame.
+  int stars = 0;            ///< 1 + (no damage) + (within par time, or no par time given).
+
+  /// True when this score beats `other`: more stars, then less time, then less damage.
+  [[nodiscard]] bool betterThan(const ParkingScore& other) const;
+};
+
+/// Stars for a parked run: one for parking, one for no damage, one for parking within the par
+/// time (always earned when the goal has none).
+[[nodiscard]] int starsFor(const Goal& goal, double seconds, int damage);
+
+/// Frames allowed by the time limit at `hz`: ceil(time_limit * hz), or nullopt without a limit.
+[[nodiscard]] std::optional<std::int64_t> limitFrames(const Goal& goal, double hz);
+
+/// A parking challenge run beside a World: call observe() on frame 0 and after every step.
+class ParkingChallenge {
+ public:
+  /// A challenge for `goal`; `hz` converts frames to seconds, `start_health` measures damage.
+  ParkingChallenge(const Goal& goal, double hz, int start_health);
+
+  /// Looks at the world's current frame. Does nothing once the challenge is over.
+  void observe(const World& world);
+
+  /// First frame at which the car was parked.
+  [[nodiscard]] std::optional<std::int64_t> parkedFrame() const { return parked_frame_; }
+  /// The score, once parked.
+  [[nodiscard]] std::optional<ParkingScore> score() const { return score_; }
+  /// The time limit passed before the car parked.
+  [[nodiscard]] bool timedOut() const { return timed_out_; }
+  /// Health reached 0 before the car parked.
+  [[nodiscard]] bool wrecked() const { return wrecked_; }
+  /// Parked, timed out or wrecked: the run is decided.
+  [[nodiscard]] bool over() const { return parked_frame_ || timed_out_ || wrecked_; }
+  /// Frames observed so far (the timer), stopped when the challenge is over.
+  [[nodiscard]] std::int64_t frames() const { return frames_; }
+  /// The timer in seconds.
+  [[nodiscard]] double seconds() const;
+  /// The last check made (for the HUD).
+  [[nodiscard]] const ParkingCheck& lastCheck() const { return last_; }
+  /// The goal.
+  [[nodiscard]] const Goal& goal() const { return goal_; }
+
+ private:
+  Goal goal_;
+  double hz_;
+  int start_health_;
+  std::optional<std::int64_t> limit_frames_;
+  std::int64_t frames_ = 0;
+  ParkingCheck last_;
+  std::optional<std::int64_t> parked_frame_;
+  std::optional<ParkingScore> score_;
+  bool timed_out_ = false;
+  bool wrecked_ = false;
+};
+
+}  // namespace cardemo

@@ -1,0 +1,77 @@
+#include "play/level_list.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace cardemo {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string levelScene(const std::string& name, int order, const std::string& title) {
+  return R"({"format": "cardemo-scene/1", "name": ")" + name +
+         R"(", "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8},
+  "parked": [], "level": {"order": )" +
+         std::to_string(order) + R"(, "title": ")" + title + R"("}})";
+}
+
+TEST(LevelList, BundledLevelsInOrderThenFreeDrive) {
+  std::vector<std::string> warnings;
+  const std::vector<LevelEntry> e =
+      listLevels(std::string(CARDEMO_SOURCE_DIR) + "/assets", warnings);
+  EXPECT_TRUE(warnings.empty());
+  ASSERT_EQ(e.size(), 5u);
+  EXPECT_EQ(e[0].title, "Straight in");
+  EXPECT_EQ(e[1].title, "Reverse bay");
+  EXPECT_EQ(e[2].title, "Parallel parking");
+  EXPECT_EQ(e[3].title, "Tight garage");
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(e[static_cast<std::size_t>(i)].order, i + 1);
+    EXPECT_FALSE(e[static_cast<std::size_t>(i)].free_drive);
+  }
+  EXPECT_TRUE(e[4].free_drive);
+  EXPECT_EQ(e[4].title, "Free drive");
+  EXPECT_NE(e[4].path.find("parking-lot.json"), std::string::npos);
+}
+
+TEST(LevelList, ScenesWithoutLevelAreLeftOutAndBrokenOnesWarned) {
+  const fs::path dir = fs::temp_directory_path() / ("cardemo_levels_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "scenes" / "levels");
+  std::ofstream(dir / "scenes" / "levels" / "b.json") << levelScene("b", 2, "Second");
+  std::ofstream(dir / "scenes" / "levels" / "a.json") << levelScene("a", 2, "Also second");
+  std::ofstream(dir / "scenes" / "levels" / "c.json") << levelScene("c", 1, "First");
+  std::ofstream(dir / "scenes" / "levels" / "test-only.json")
+      << R"({"format": "cardemo-scene/1", "player": {"x": 0, "y": 0, "heading_deg": 0,
+            "length": 4.5, "width": 1.8}, "parked": []})";
+  std::ofstream(dir / "scenes" / "levels" / "broken.json") << "{";
+  std::ofstream(dir / "scenes" / "levels" / "notes.txt") << "not a scene";
+  std::vector<std::string> warnings;
+  const std::vector<LevelEntry> e = listLevels(dir.string(), warnings);
+  ASSERT_EQ(e.size(), 3u);  // no parking-lot.json here: no free drive
+  EXPECT_EQ(e[0].scene_name, "c");
+  EXPECT_EQ(e[1].scene_name, "a");  // same order: by title
+  EXPECT_EQ(e[2].scene_name, "b");
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("broken.json:"), std::string::npos) << warnings[0];
+  fs::remove_all(dir);
+}
+
+TEST(LevelList, MissingFolderGivesNothing) {
+  std::vector<std::string> warnings;
+  EXPECT_TRUE(listLevels("/nonexistent/cardemo/assets", warnings).empty());
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(LevelList, MoveSelectionWraps) {
+  EXPECT_EQ(moveSelection(0, -1, 5), 4);
+  EXPECT_EQ(moveSelection(4, 1, 5), 0);
+  EXPECT_EQ(moveSelection(2, 1, 5), 3);
+  EXPECT_EQ(moveSelection(0, 1, 0), 0);
+}
+
+}  // namespace
+}  // namespace cardemo

@@ -1,0 +1,217 @@
+#include "sim/parking_goal.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geometry/angle.hpp"
+#include "scene_builders.hpp"
+#include "sim/state_hash.hpp"
+#include "sim/world.hpp"
+
+namespace cardemo {
+namespace {
+
+// Bay at (10, 5) facing +y (heading 90), tolerances 0.5 m, 8 degrees, 0.3 m/s.
+Goal bayGoal() {
+  Goal g;
+  g.bay.center = {10.0, 5.0};
+  g.bay.heading_deg = 90.0;
+  g.position_tolerance = 0.5;
+  g.heading_tolerance_deg = 8.0;
+  g.max_speed = 0.3;
+  return g;
+}
+
+ParkingCheck at(const Goal& g, double dx, double dy, double heading_deg, double speed) {
+  return checkParking(g, g.bay.center + Eigen::Vector2d(dx, dy), unitFromDegrees(heading_deg),
+                      speed);
+}
+
+TEST(ParkingCheck, CentredAlignedAndStoppedIsParked) {
+  const ParkingCheck c = at(bayGoal(), 0, 0, 90, 0);
+  EXPECT_TRUE(c.parked());
+  EXPECT_EQ(c.distance, 0.0);
+  EXPECT_EQ(c.heading_error_deg, 0.0);
+}
+
+TEST(ParkingCheck, PositionJustInsideAndJustOutsideTheTolerance) {
+  const Goal g = bayGoal();
+  EXPECT_TRUE(at(g, 0.5, 0, 90, 0).position_ok);  // exactly on the tolerance counts
+  EXPECT_TRUE(at(g, 0, -0.4999, 90, 0).parked());
+  EXPECT_FALSE(at(g, 0.5001, 0, 90, 0).position_ok);
+  EXPECT_FALSE(at(g, 0.3, 0.4001, 90, 0).parked());  // 0.50008 m diagonally
+  EXPECT_TRUE(at(g, 0.3, 0.3999, 90, 0).parked());   // 0.49992 m
+}
+
+TEST(ParkingCheck, HeadingJustInsideAndJustOutsideTheTolerance) {
+  const Goal g = bayGoal();
+  EXPECT_TRUE(at(g, 0, 0, 90 + 7.99, 0).parked());
+  EXPECT_TRUE(at(g, 0, 0, 90 - 7.99, 0).parked());
+  EXPECT_FALSE(at(g, 0, 0, 90 + 8.01, 0).heading_ok);
+  EXPECT_FALSE(at(g, 0, 0, 90 - 8.01, 0).parked());
+  EXPECT_NEAR(at(g, 0, 0, 95, 0).heading_error_deg, 5.0, 1e-12);
+}
+
+TEST(ParkingCheck, HeadingErrorWrapsAcross180) {
+  Goal g = bayGoal();
+  g.bay.heading_deg = 180.0;
+  EXPECT_TRUE(at(g, 0, 0, -176, 0).parked());
+  EXPECT_NEAR(at(g, 0, 0, -176, 0).heading_error_deg, 4.0, 1e-12);
+}
+
+TEST(ParkingCheck, ReverseParkedCountsOnlyWhenEitherDirection) {
+  Goal g = bayGoal();
+  EXPECT_FALSE(at(g, 0, 0, -90, 0).parked());
+  EXPECT_NEAR(at(g, 0, 0, -90, 0).heading_error_deg, 180.0, 1e-12);
+  g.either_direction = true;
+  EXPECT_TRUE(at(g, 0, 0, -90, 0).parked());
+  EXPECT_EQ(at(g, 0, 0, -90, 0).heading_error_deg, 0.0);
+  EXPECT_TRUE(at(g, 0, 0, -90 + 7.99, 0).parked());
+  EXPECT_FALSE(at(g, 0, 0, -90 + 8.01, 0).parked());
+  EXPECT_FALSE(at(g, 0, 0, 0, 0).parked());  // across the bay: 90 degrees off either way
+  EXPECT_NEAR(at(g, 0, 0, 0, 0).heading_error_deg, 90.0, 1e-12);
+}
+
+TEST(ParkingCheck, SpeedJustAboveTheLimitIsNotParked) {
+  const Goal g = bayGoal();
+  EXPECT_TRUE(at(g, 0, 0, 90, 0.3).parked());
+  EXPECT_TRUE(at(g, 0, 0, 90, -0.3).parked());
+  EXPECT_FALSE(at(g, 0, 0, 90, 0.3001).parked());
+  EXPECT_FALSE(at(g, 0, 0, 90, -0.3001).speed_ok);
+}
+
+TEST(ParkingScore, StarsForDamageAndPar) {
+  Goal g = bayGoal();
+  g.par_time = 20.0;
+  EXPECT_EQ(starsFor(g, 20.0, 0), 3);  // exactly on par counts
+  EXPECT_EQ(starsFor(g, 20.01, 0), 2);
+  EXPECT_EQ(starsFor(g, 10.0, 5), 2);
+  EXPECT_EQ(starsFor(g, 30.0, 5), 1);
+  g.par_time.reset();
+  EXPECT_EQ(starsFor(g, 1000.0, 0), 3);  // no par: the time star is free
+  EXPECT_EQ(starsFor(g, 1000.0, 1), 2);
+}
+
+TEST(ParkingScore, BetterMeansMoreStarsThenLessTimeThenLessDamage) {
+  const ParkingScore three{1200, 10.0, 0, 3};
+  const ParkingScore two_fast{600, 5.0, 10, 2};
+  EXPECT_TRUE(three.betterThan(two_fast));
+  EXPECT_FALSE(two_fast.betterThan(three));
+  const ParkingScore three_faster{1000, 8.0, 0, 3};
+  EXPECT_TRUE(three_faster.betterThan(three));
+  const ParkingScore same_time_less_damage{1200, 10.0, 0, 2};
+  const ParkingScore same_time_more_damage{1200, 10.0, 4, 2};
+  EXPECT_TRUE(same_time_less_damage.betterThan(same_time_more_damage));
+  EXPECT_FALSE(three.betterThan(three));
+}
+
+TEST(ParkingScore, LimitFramesRoundsUp) {
+  Goal g = bayGoal();
+  EXPECT_FALSE(limitFrames(g, 120.0).has_value());
+  g.time_limit = 60.0;
+  EXPECT_EQ(limitFrames(g, 120.0), 7200);
+  g.time_limit = 0.001;
+  EXPECT_EQ(limitFrames(g, 120.0), 1);
+}
+
+// A car that starts rolling at 2 m/s straight towards a bay 10 m ahead and brakes: it parks at
+// the first frame where it is in the bay and slow enough; the World's hash is unaffected.
+Scene driveInScene() {
+  Scene s = test::sceneWith({}, 0.0, 0.0, 0.0);
+  Goal g;
+  g.bay.center = {4.0, 0.0};
+  g.bay.heading_deg = 0.0;
+  g.position_tolerance = 0.5;
+  g.max_speed = 0.3;
+  g.par_time = 10.0;
+  s.goal = g;
+  return s;
+}
+
+TEST(ParkingChallenge, ParksAtTheFirstFrameInsideAndSlowEnough) {
+  const Scene scene = driveInScene();
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, world.settings().hz, scene.player.health);
+  challenge.observe(world);
+  EXPECT_FALSE(challenge.over());
+  std::int64_t expected = -1;
+  for (int i = 0; i < 2400 && !challenge.over(); ++i) {
+    InputFrame in;
+    in.up = world.car().position.x() < 2.5;
+    in.down = !in.up && world.car().speed > 0.0;
+    world.step(in);
+    const ParkingCheck c =
+        checkParking(*scene.goal, world.car().position, world.car().direction, world.car().speed);
+    if (expected < 0 && c.parked()) expected = world.frame();
+    challenge.observe(world);
+  }
+  ASSERT_TRUE(challenge.parkedFrame().has_value());
+  EXPECT_EQ(*challenge.parkedFrame(), expected);
+  ASSERT_TRUE(challenge.score().has_value());
+  EXPECT_EQ(challenge.score()->frames, expected);
+  EXPECT_EQ(challenge.score()->damage, 0);
+  EXPECT_EQ(challenge.score()->stars, 3);
+  EXPECT_EQ(challenge.frames(), expected);
+  // Observing more frames changes nothing once parked.
+  world.step(InputFrame{true, false, false, false});
+  challenge.observe(world);
+  EXPECT_EQ(challenge.frames(), expected);
+}
+
+TEST(ParkingChallenge, StartingInTheBayAtRestParksAtFrameZero) {
+  Scene scene = driveInScene();
+  scene.goal->bay.center = {0.0, 0.0};
+  const World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  challenge.observe(world);
+  EXPECT_EQ(challenge.parkedFrame(), 0);
+}
+
+TEST(ParkingChallenge, TimeLimitEndsTheRunAtItsFrame) {
+  Scene scene = driveInScene();
+  scene.goal->time_limit = 0.5;  // 60 frames at 120 Hz
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  challenge.observe(world);
+  while (!challenge.over()) {
+    world.step(InputFrame{});
+    challenge.observe(world);
+  }
+  EXPECT_TRUE(challenge.timedOut());
+  EXPECT_FALSE(challenge.parkedFrame().has_value());
+  EXPECT_EQ(challenge.frames(), 60);
+  EXPECT_EQ(world.frame(), 60);
+}
+
+TEST(ParkingChallenge, RollingThroughTheBayTooFastIsNotParked) {
+  Scene scene = driveInScene();
+  scene.player.speed = 5.0;
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  challenge.observe(world);
+  for (int i = 0; i < 240; ++i) {
+    world.step(InputFrame{});
+    challenge.observe(world);
+  }
+  EXPECT_GT(world.car().position.x(), 5.0);  // went past the bay
+  EXPECT_FALSE(challenge.parkedFrame().has_value());
+}
+
+TEST(ParkingChallenge, ObservingDoesNotChangeTheWorldHash) {
+  const Scene scene = driveInScene();
+  World watched(scene);
+  World alone(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  const std::vector<InputFrame> drive = test::scriptedDrive(7, 600);
+  for (const InputFrame& in : drive) {
+    watched.step(in);
+    challenge.observe(watched);
+    alone.step(in);
+  }
+  EXPECT_EQ(watched.stateHash(), alone.stateHash());
+}
+
+}  // namespace
+}  // namespace cardemo
