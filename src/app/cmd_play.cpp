@@ -29,6 +29,7 @@ struct PlayOptions {
   std::string json_path;
   int hz = 120;
   bool progress = false;
+  bool mute = false;
 };
 
 constexpr const char* kDefaultScene = "scenes/parking-lot.json";
@@ -56,6 +57,18 @@ std::string findAssetsFolder() {
     std::error_code ec;
     if (fs::is_regular_file(folder / kDefaultScene, ec)) {
       return folder.lexically_normal().string();
+    }
+  }
+  return {};
+}
+
+// The bundled sounds (assets/sounds), found like the default scene; empty when absent.
+std::string findSounds() {
+  for (const fs::path& folder : assetFolders()) {
+    std::error_code ec;
+    const fs::path candidate = folder / "sounds";
+    if (fs::is_regular_file(candidate / "engine-1.wav", ec)) {
+      return candidate.lexically_normal().string();
     }
   }
   return {};
@@ -105,6 +118,8 @@ int runPlayCommand(const PlayOptions& options) {
   window.json_path = options.json_path;
   window.progress = options.progress;
   window.replay_path = options.replay_path;
+  window.mute = options.mute;
+  window.sounds_dir = findSounds();
   SessionConfig& session = window.session;
   session.settings.hz = options.hz;
   session.record_path = options.record_path;
@@ -146,19 +161,24 @@ int runPlayCommand(const PlayOptions& options) {
 
 void addPlayCommand(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<PlayOptions>();
-  CLI::App* sub = app.add_subcommand("play", "Drive in a window with the arrow keys (F1: help)");
+  CLI::App* sub =
+      app.add_subcommand("play", "Drive in a window with the arrow keys or WASD (F1: help)");
   sub->add_option("SCENE", options->scene_path,
                   "Scene file (default: the replay's scene, else a picker of the bundled levels "
                   "and the free-drive lot)");
-  sub->add_option("--record", options->record_path,
-                  "Record every simulated step to FILE as a replay (FILE.part while playing)");
-  sub->add_option("--replay", options->replay_path,
-                  "Play a replay's inputs first; the keyboard takes over when it ends");
+  sub->add_option(
+      "--record", options->record_path,
+      "Record every simulated step to FILE as a replay (FILE.part while playing); after a "
+      "restart, attempt N records to FILE-N (drive.replay, drive-2.replay, ...)");
+  sub->add_option(
+      "--replay", options->replay_path,
+      "Play a replay's inputs first; when it ends the game waits (YOUR TURN) until you drive");
   sub->add_option("--json", options->json_path,
                   "Write the summary JSON to FILE when the game ends");
   sub->add_flag("--progress", options->progress,
                 "Print each simulated frame's number on standard output as it is stepped (for "
                 "scripts and tests)");
+  sub->add_flag("--mute", options->mute, "Start with the sound off (M toggles it)");
   sub->add_option("--hz", options->hz,
                   "Fixed simulation rate in steps per second (default 120; a replay uses its own)");
   sub->callback([options, &exit_code] { exit_code = runPlayCommand(*options); });

@@ -13,12 +13,17 @@
 
 #include "io/atomic_file.hpp"
 #include "io/summary_json.hpp"
+#include "platform/game_audio.hpp"
+#include "platform/game_controller.hpp"
 #include "platform/png_save.hpp"
 #include "platform/sdl_canvas.hpp"
 #include "platform/sprite_path.hpp"
+#include "play/analog_drive.hpp"
 #include "play/fixed_step_clock.hpp"
 #include "play/input_latch.hpp"
 #include "play/level_run.hpp"
+#include "play/play_flow.hpp"
+#include "play/sound_mix.hpp"
 #include "render/camera_rig.hpp"
 #include "render/draw_world.hpp"
 #include "render/effects.hpp"
@@ -58,26 +63,53 @@ void printFrame(std::int64_t frame) {
 constexpr int kMaxStepsPerFrame = 8;
 // The +/- keys scale the camera rig's zoom by zoom / kDefaultZoom.
 constexpr double kDefaultZoom = 12.0, kMinZoom = 2.0, kMaxZoom = 80.0;
-constexpr double kMinSpeed = 0.25, kMaxSpeed = 8.0;
 
 struct SdlDeleter {
   void operator()(SDL_Window* w) const { SDL_DestroyWindow(w); }
   void operator()(SDL_Renderer* r) const { SDL_DestroyRenderer(r); }
 };
 
-bool driveKey(SDL_Keycode code, DriveKey& key) {
-  switch (code) {
-    case SDLK_UP:
-      key = DriveKey::kUp;
+// Arrows, and WASD by position (scancode), so the same physical keys drive on any layout; Space
+// is the handbrake.
+bool driveKey(const SDL_Keysym& key, DriveKey& out) {
+  switch (key.scancode) {
+    case SDL_SCANCODE_UP:
+    case SDL_SCANCODE_W:
+      out = DriveKey::kUp;
       return true;
-    case SDLK_DOWN:
-      key = DriveKey::kDown;
+    case SDL_SCANCODE_DOWN:
+    case SDL_SCANCODE_S:
+      out = DriveKey::kDown;
       return true;
-    case SDLK_LEFT:
-      key = DriveKey::kLeft;
+    case SDL_SCANCODE_LEFT:
+    case SDL_SCANCODE_A:
+      out = DriveKey::kLeft;
       return true;
-    case SDLK_RIGHT:
-      key = DriveKey::kRight;
+    case SDL_SCANCODE_RIGHT:
+    case SDL_SCANCODE_D:
+      out = DriveKey::kRight;
+      return true;
+    case SDL_SCANCODE_SPACE:
+      out = DriveKey::kHandbrake;
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool padDriveButton(Uint8 button, DriveKey& out) {
+  switch (button) {
+    case SDL_CONTROLLER_BUTTON_DPAD_UP:
+      out = DriveKey::kUp;
+      return true;
+    case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
+      out = DriveKey::kDown;
+      return true;
+    case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
+      out = DriveKey::kLeft;
+      return true;
+    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
+      out = DriveKey::kRight;
       return true;
     default:
       return false;
@@ -96,22 +128,41 @@ std::string saveScreenshot(SDL_Renderer* renderer) {
   return "too many screenshots in this folder";
 }
 
-// Mutable state of the running window (everything but the session).
+// Mutable state of the running window (everything but the session and the flow).
 struct LoopState {
   bool quit = false;
-  bool paused = false;
-  bool step_once = false;
   bool restart = false;
+  bool confirm = false;  // Enter, Space or the pad's A: restart once the game has ended
   bool screenshot = false;
+  bool fullscreen = false;
+  bool toggle_mute = false;
   double zoom = kDefaultZoom;
-  double speed = 1.0;
   DrawOptions draw;
 };
 
-void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, InputLatch& latch) {
+// Everything that reads input events, in one place.
+struct Inputs {
+  InputLatch latch;
+  AnalogDrive analog;
+  GameController pad;
+};
+
+void toggleFullscreen(SDL_Window* window, LoopState& s) {
+  s.fullscreen = !s.fullscreen;
+  // Desktop full screen: the desktop's resolution, no mode switch.
+  if (SDL_SetWindowFullscreen(window, s.fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0) != 0) {
+    s.fullscreen = !s.fullscreen;
+  }
+}
+
+void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, PlayFlow& flow, Inputs& in,
+                   SDL_Window* window) {
   DriveKey drive{};
-  if (driveKey(key.keysym.sym, drive)) {
-    latch.press(drive);
+  if (driveKey(key.keysym, drive)) {
+    in.latch.press(drive);
+    flow.driveKeyPressed();
+    // Space is also "restart" once the game has ended (the flow decides).
+    if (drive == DriveKey::kHandbrake && key.repeat == 0) s.confirm = true;
     return;
   }
   if (key.repeat != 0) return;  // toggles act once per press
@@ -119,11 +170,15 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, InputLatch& latch
     case SDLK_ESCAPE:
       s.quit = true;
       break;
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER:
+      s.confirm = true;
+      break;
     case SDLK_p:
-      s.paused = !s.paused;
+      flow.togglePause();
       break;
     case SDLK_n:
-      if (s.paused) s.step_once = true;
+      flow.stepOnce();
       break;
     case SDLK_r:
       s.restart = true;
@@ -131,8 +186,14 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, InputLatch& latch
     case SDLK_b:
       s.draw.debug_overlay = !s.draw.debug_overlay;
       break;
+    case SDLK_m:
+      s.toggle_mute = true;
+      break;
     case SDLK_F1:
-      s.draw.help = !s.draw.help;
+      flow.toggleHelp();
+      break;
+    case SDLK_F11:
+      toggleFullscreen(window, s);
       break;
     case SDLK_F12:
       s.screenshot = true;
@@ -147,29 +208,51 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, InputLatch& latch
       s.zoom = std::max(kMinZoom, s.zoom / 1.25);
       break;
     case SDLK_LEFTBRACKET:
-      s.speed = std::max(kMinSpeed, s.speed * 0.5);
+      flow.slower();
       break;
     case SDLK_RIGHTBRACKET:
-      s.speed = std::min(kMaxSpeed, s.speed * 2.0);
+      flow.faster();
       break;
     default:
       break;
   }
 }
 
-void pollEvents(LoopState& s, InputLatch& latch) {
+void handlePadButton(const SDL_ControllerButtonEvent& button, bool down, LoopState& s,
+                     PlayFlow& flow, Inputs& in) {
+  if (!in.pad.owns(button.which)) return;
+  DriveKey drive{};
+  if (padDriveButton(button.button, drive)) {
+    if (down) {
+      in.latch.press(drive);
+      flow.driveKeyPressed();
+    } else {
+      in.latch.release(drive);
+    }
+    return;
+  }
+  if (!down) return;
+  if (button.button == SDL_CONTROLLER_BUTTON_START) flow.togglePause();
+  if (button.button == SDL_CONTROLLER_BUTTON_A) s.confirm = true;
+  if (button.button == SDL_CONTROLLER_BUTTON_BACK) s.restart = true;
+}
+
+void pollEvents(LoopState& s, PlayFlow& flow, Inputs& in, SDL_Window* window) {
   SDL_Event e;
   while (SDL_PollEvent(&e) != 0) {
+    if (in.pad.handleDeviceEvent(e)) continue;
     if (e.type == SDL_QUIT) {
       s.quit = true;
     } else if (e.type == SDL_KEYDOWN) {
-      handleKeyDown(e.key, s, latch);
+      handleKeyDown(e.key, s, flow, in, window);
     } else if (e.type == SDL_KEYUP) {
       DriveKey drive{};
-      if (driveKey(e.key.keysym.sym, drive)) latch.release(drive);
+      if (driveKey(e.key.keysym, drive)) in.latch.release(drive);
+    } else if (e.type == SDL_CONTROLLERBUTTONDOWN || e.type == SDL_CONTROLLERBUTTONUP) {
+      handlePadButton(e.cbutton, e.type == SDL_CONTROLLERBUTTONDOWN, s, flow, in);
     } else if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_FOCUS_LOST) {
       // Key-up events go to the new focus; without this a key would stay held forever.
-      latch.releaseAll();
+      in.latch.releaseAll();
     }
   }
 }
@@ -193,13 +276,21 @@ std::string statusLine(const GameSession& session, const GameWindowOptions& opti
               " (" + std::to_string(session.playbackLeft()) + " frames left)";
   }
   if (session.recording()) {
-    status +=
-        (status.empty() ? "" : "  ") + std::string("recording to ") + options.session.record_path;
+    status += (status.empty() ? "" : "  ") + std::string("recording to ") + session.recordPath();
   }
   return status;
 }
 
-int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
+// Reports a recording error once per attempt; returns 2 when there was one.
+int reportRecordError(const GameSession& session, bool& reported, std::string& note) {
+  if (reported || session.recordError().empty()) return 0;
+  reported = true;
+  std::fprintf(stderr, "%s\n", session.recordError().c_str());
+  note = "recording failed: see the terminal";
+  return 2;
+}
+
+int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions& options) {
   const std::string json_path = options.json_path;
   GameSession session(options.session);
   if (!session.recordError().empty()) {
@@ -217,8 +308,18 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
   CameraRig rig(session.world(), {vw, vh});
   const double hz = options.session.settings.hz;
   FixedStepClock clock(1.0 / hz, kMaxStepsPerFrame);
-  InputLatch latch;
+  Inputs in;
+  PlayFlow flow;
   LevelRun level(session.world(), bestScoresPath());
+  GameAudio audio(options.sounds_dir, options.mute);
+  SoundMix sound;
+  InputFrame last_input;
+  // No sound is not an error: say so once, unless the player asked for silence (then on M).
+  bool audio_reported = false;
+  if (!options.mute && !audio.message().empty()) {
+    audio_reported = true;
+    std::fprintf(stderr, "cardemo play: %s\n", audio.message().c_str());
+  }
   LoopState s;
   std::string note;
   bool over_reported = false;
@@ -229,62 +330,88 @@ int runLoop(SDL_Renderer* renderer, const GameWindowOptions& options) {
   double fps = 0.0;
 
   while (!s.quit && g_stop_signal == 0) {
-    pollEvents(s, latch);
+    pollEvents(s, flow, in, window);
     if (s.quit) break;
     const Uint64 now = SDL_GetPerformanceCounter();
     const double elapsed = static_cast<double>(now - last) / ticks_per_second;
     last = now;
     if (elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.95 * fps + 0.05 / elapsed;
 
+    // GAME OVER, or a level's PARKED / TIME UP: Enter or Space starts the next attempt.
+    const auto ended = [&] { return session.ended() || level.over(); };
+    if (s.confirm && flow.confirm(ended())) s.restart = true;
+    s.confirm = false;
     if (s.restart) {
       s.restart = false;
+      // The attempt that ends here is published under its own name before the next one starts.
+      if (const std::string why = session.finishRecording();
+          !why.empty() && !record_error_reported) {
+        std::fprintf(stderr, "%s\n", why.c_str());
+        status = 2;
+      }
       session.restart();
       effects.reset(session.world());
       rig.reset(session.world());
       level.restart(session.world());
-      latch.releaseAll();
+      in.latch.releaseAll();
+      in.analog.reset();
+      flow.restarted();
       over_reported = false;
-      note = "restarted";
+      record_error_reported = false;
+      note = "attempt " + std::to_string(session.attempt());
+      status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
-    int steps = s.paused ? 0 : clock.advance(elapsed, s.speed);
-    if (s.paused && s.step_once) steps = 1;
-    s.step_once = false;
-    for (int i = 0; i < steps && !level.over(); ++i) {
-      session.step(latch.sample());
+    if (s.toggle_mute) {
+      s.toggle_mute = false;
+      audio.toggleMute();
+      if (!audio.available() && !audio_reported) {
+        audio_reported = true;
+        std::fprintf(stderr, "cardemo play: %s\n", audio.message().c_str());
+      }
+      note = !audio.available() ? "no sound: see the terminal"
+             : audio.muted()    ? "sound off"
+                                : "sound on";
+    }
+    const PadState pad = in.pad.read();
+    if (pad.throttle > 0.0 || pad.brake > 0.0 || pad.steer != 0.0 || pad.handbrake) {
+      flow.driveKeyPressed();
+    }
+    flow.update(session.playingBack(), ended());
+    const int steps = flow.stepsToRun(flow.holding() ? 0 : clock.advance(elapsed, flow.speed()));
+    for (int i = 0; i < steps && !ended(); ++i) {
+      last_input = session.step(mergeInputs(in.latch.sample(), in.analog.sample(pad)));
       effects.observe(session.world());
       rig.step(session.world());
       if (level.observe(session.world()) && level.over()) {
         status = std::max(status, writeSummary(json_path, session.world(), level));
+        if (level.challenge()->parkedFrame()) audio.playChime();
       }
       if (options.progress) printFrame(session.world().frame());
+      // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
+      flow.update(session.playingBack(), ended());
+      if (flow.holding()) break;
     }
     if (const std::string warning = level.takeWarning(); !warning.empty()) {
       std::fprintf(stderr, "%s\n", warning.c_str());
     }
-    if (!record_error_reported && !session.recordError().empty()) {
-      // Say so at once (disk full, file too large): the game goes on, the recording does not.
-      record_error_reported = true;
-      std::fprintf(stderr, "%s\n", session.recordError().c_str());
-      note = "recording failed: see the terminal";
-      status = 2;
-    }
+    status = std::max(status, reportRecordError(session, record_error_reported, note));
     if (session.world().gameOver() && !over_reported) {
       over_reported = true;
       status = std::max(status, writeSummary(json_path, session.world(), level));
-      if (!record_error_reported && !session.recordError().empty()) {
-        record_error_reported = true;
-        std::fprintf(stderr, "%s\n", session.recordError().c_str());
-        status = 2;
-      }
+      status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
 
-    const bool frozen = s.paused || session.world().gameOver() || level.over();
+    audio.apply(sound.update(session.world(), last_input, flow.holding()));
+
+    const bool frozen = flow.holding() || session.world().gameOver() || level.over();
     const Obb2 box = session.blendedBox(frozen ? 1.0 : clock.alpha());
     int w = 0, h = 0;
     SDL_GetRendererOutputSize(renderer, &w, &h);
-    s.draw.paused = s.paused;
+    s.draw.paused = flow.paused() || flow.help();
+    s.draw.help = flow.help();
+    s.draw.banner = flow.yourTurn() ? "YOUR TURN: drive to take over" : "";
     s.draw.fps = fps;
-    s.draw.playback_speed = session.playingBack() || s.speed != 1.0 ? s.speed : 0.0;
+    s.draw.playback_speed = session.playingBack() ? flow.chosenSpeed() : 0.0;
     s.draw.status = statusLine(session, options, note);
     s.draw.effects = &effects;
     s.draw.sprites = true;
@@ -337,6 +464,8 @@ int runGameWindow(const GameWindowOptions& options) {
                  SDL_GetError());
     return 1;
   }
+  // A controller is optional: without the subsystem the game simply has none.
+  (void)SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER);
   installSignalHandlers();
   const std::string title = "cardemo \xE2\x80\x94 " + options.session.scene.name;
   std::unique_ptr<SDL_Window, SdlDeleter> window(
@@ -359,7 +488,7 @@ int runGameWindow(const GameWindowOptions& options) {
     SDL_Quit();
     return 1;
   }
-  int status = runLoop(renderer.get(), options);
+  int status = runLoop(window.get(), renderer.get(), options);
   renderer.reset();
   window.reset();
   SDL_Quit();

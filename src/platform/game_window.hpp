@@ -13,6 +13,8 @@ struct GameWindowOptions {
   std::string json_path;    ///< Summary JSON written when the game ends (empty: none).
   std::string replay_path;  ///< The replay being played, for the status line (may be empty).
   bool progress = false;    ///< Print each simulated frame's number on standard output.
+  std::string sounds_dir;   ///< Folder of the WAVs (assets/sounds); empty: not found, silent.
+  bool mute = false;        ///< Start with the sound off (M toggles).
 };
 
 /// True when an X11 or Wayland display is named in the environment, or SDL_VIDEODRIVER names a

@@ -16,7 +16,8 @@ GameSession::GameSession(SessionConfig config) : config_(std::move(config)) {
 
 void GameSession::startRecording() {
   if (config_.record_path.empty()) return;
-  recorder_ = std::make_unique<Recorder>(config_.record_path, config_.scene_path,
+  record_path_ = attemptPath(config_.record_path, attempt_);
+  recorder_ = std::make_unique<Recorder>(record_path_, config_.scene_path,
                                          static_cast<int>(std::lround(config_.settings.hz)),
                                          config_.flush_every_frames);
   recording_done_ = false;
@@ -47,6 +48,8 @@ void GameSession::restart() {
   run_ = 0;
   run_played_ = 0;
   recorder_.reset();
+  record_error_.clear();
+  ++attempt_;
   startRecording();
 }
 

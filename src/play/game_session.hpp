@@ -9,6 +9,7 @@
 
 #include "geometry/obb2.hpp"
 #include "io/replay_text.hpp"
+#include "play/attempt_path.hpp"
 #include "play/recorder.hpp"
 #include "sim/world.hpp"
 
@@ -33,18 +34,26 @@ class GameSession {
 
   /// Simulates one fixed step unless the game is over; returns the input used.
   InputFrame step(const InputFrame& live);
-  /// A fresh World from the scene; playback restarts and so does the recording (the previous
-  /// attempt is published first, then replaced when this one finishes).
+  /// A fresh World from the scene; playback restarts and so does the recording: the previous
+  /// attempt is published first, and this one records to attemptPath(record_path, attempt()),
+  /// so no attempt overwrites another's file.
   void restart();
   /// Finishes and publishes the recording (idempotent); empty or what went wrong.
   std::string finishRecording();
 
   /// The world.
   [[nodiscard]] const World& world() const { return *world_; }
+  /// True once this attempt has ended (GAME OVER): nothing more is simulated, and Enter or Space
+  /// restarts.
+  [[nodiscard]] bool ended() const { return world_->gameOver(); }
   /// True while the replay still has inputs.
   [[nodiscard]] bool playingBack() const { return run_ < config_.playback.size(); }
   /// Frames of replay input not yet played.
   [[nodiscard]] std::int64_t playbackLeft() const;
+  /// The attempt being played: 1 at the start, one more at each restart().
+  [[nodiscard]] int attempt() const { return attempt_; }
+  /// The file this attempt records to (empty when not recording).
+  [[nodiscard]] const std::string& recordPath() const { return record_path_; }
   /// True when a recording is being written (not yet finished).
   [[nodiscard]] bool recording() const { return recorder_ != nullptr && !recording_done_; }
   /// Empty, or why the recording failed.
@@ -61,6 +70,8 @@ class GameSession {
   std::unique_ptr<Recorder> recorder_;
   bool recording_done_ = false;
   std::string record_error_;
+  int attempt_ = 1;
+  std::string record_path_;      // this attempt's file
   std::size_t run_ = 0;          // playback run being played
   std::int64_t run_played_ = 0;  // frames of it already played
   Obb2 previous_box_;

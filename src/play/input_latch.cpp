@@ -12,9 +12,11 @@ bool& slot(InputFrame& frame, DriveKey key) {
     case DriveKey::kLeft:
       return frame.left;
     case DriveKey::kRight:
+      return frame.right;
+    case DriveKey::kHandbrake:
       break;
   }
-  return frame.right;
+  return frame.handbrake;
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 
 namespace cardemo {
 
-/// The four driving keys.
-enum class DriveKey { kUp, kDown, kLeft, kRight };
+/// The driving keys.
+enum class DriveKey { kUp, kDown, kLeft, kRight, kHandbrake };
 
 /// Collects key presses and releases between steps. sample() reports a key as held for the step if
 /// it is held now or was pressed at any time since the previous sample.

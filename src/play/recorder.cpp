@@ -105,7 +105,7 @@ Recorder::Recorder(std::string path, const std::string& scene_path, int hz,
   }
   // Other games (and `cardemo play` itself, before it opens a window) see the lock.
   (void)::flock(fd_, LOCK_EX | LOCK_NB);
-  // The longest line is "100000000 UDLR\n": 32 bytes per run is ample.
+  // The longest line is "100000000 UDLRH\n": 32 bytes per run is ample.
   pending_.reserve(static_cast<std::size_t>(std::min<std::int64_t>(flush_every_, 1 << 15)) * 32 +
                    2 * kPage);
   pending_ = "cardemo-replay 1\n";
@@ -139,12 +139,13 @@ void Recorder::fail(const std::string& what) {
 void Recorder::writeRun() {
   if (run_length_ == 0) return;
   char line[48];
-  char keys[5];
+  char keys[6];
   int k = 0;
   if (run_keys_.up) keys[k++] = 'U';
   if (run_keys_.down) keys[k++] = 'D';
   if (run_keys_.left) keys[k++] = 'L';
   if (run_keys_.right) keys[k++] = 'R';
+  if (run_keys_.handbrake) keys[k++] = 'H';
   if (k == 0) keys[k++] = '.';
   keys[k] = '\0';
   const int n =

@@ -24,6 +24,8 @@ struct DrawOptions {
   bool help = false;
   /// Shows PAUSED.
   bool paused = false;
+  /// A large one-line message at the top instead of PAUSED (e.g. "YOUR TURN"); empty: none.
+  std::string banner;
   /// Frames per second shown in the HUD (0 hides it).
   double fps = 0.0;
   /// Replay speed shown in the HUD while playing a replay (0 hides it).

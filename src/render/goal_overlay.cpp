@@ -126,14 +126,14 @@ void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
                   kTargetReady,
                   {10, 40, 20, 215},
                   runSummaryRows(world, view),
-                  "R restart    Esc quit"});
+                  "Enter restart    Esc quit"});
   } else if (c.timedOut()) {
     drawEndPanel(canvas, camera, player_box,
                  {"TIME UP",
                   {255, 90, 80, 255},
                   {60, 10, 12, 215},
                   runSummaryRows(world, view),
-                  "R restart    Esc quit"});
+                  "Enter restart    Esc quit"});
   }
 }
 

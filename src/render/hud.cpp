@@ -143,9 +143,9 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
                  static_cast<float>(vp.y()) - ts.y() - 12.0f * s},
                 hint, small, kDim);
   }
-  if (options.paused) {
+  if (options.paused || !options.banner.empty()) {
     const int big = px(30, s);
-    const std::string text = "PAUSED";
+    const std::string text = options.banner.empty() ? "PAUSED" : options.banner;
     const Eigen::Vector2f ts = canvas.textSize(text, big);
     textPanel(canvas, {0.5f * (static_cast<float>(vp.x()) - ts.x()) - pad, 14.0f * s},
               {{text, {255, 220, 90, 255}}}, big, pad);
@@ -154,8 +154,11 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
 
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
                   const std::vector<std::pair<std::string, std::string>>& summary_rows) {
-  EndPanel panel{
-      "GAME OVER", {255, 90, 80, 255}, {60, 10, 12, 215}, summary_rows, "R restart    Esc quit"};
+  EndPanel panel{"GAME OVER",
+                 {255, 90, 80, 255},
+                 {60, 10, 12, 215},
+                 summary_rows,
+                 "Enter restart    Esc quit"};
   if (panel.rows.empty()) {
     panel.rows = {
         {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
@@ -167,16 +170,20 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
 
 const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   static const std::vector<std::pair<std::string, std::string>> keys{
-      {"Up / Down", "throttle / brake, then reverse"},
-      {"Left / Right", "steer"},
+      {"Up / Down, W / S", "throttle / brake, then reverse"},
+      {"Left / Right, A / D", "steer"},
+      {"Space", "handbrake; after the game ends: restart"},
+      {"Enter", "restart after the game ends"},
       {"P", "pause / resume"},
       {"N", "step one frame while paused"},
       {"R", "restart"},
       {"B", "debug overlay (AABB, OBBs, candidates, contacts)"},
       {"+ / -", "zoom in / out"},
       {"[ / ]", "replay speed (0.25x to 8x)"},
+      {"M", "sound on / off"},
+      {"F11", "full screen"},
       {"F12", "save a PNG screenshot"},
-      {"F1", "this help"},
+      {"F1", "this help (the game waits)"},
       {"Esc", "quit"},
   };
   return keys;

@@ -59,20 +59,65 @@ TEST(GameSession, RecordingReplaysToTheSameState) {
   EXPECT_EQ(world.hits().size(), session.world().hits().size());
 }
 
-TEST(GameSession, RestartStartsAFreshWorldAndRecording) {
+TEST(GameSession, RestartStartsAFreshWorldAndANumberedRecording) {
   const fs::path dir = fs::temp_directory_path() / "cardemo_session_test";
   fs::create_directories(dir);
   const std::string path = (dir / "restart.replay").string();
+  const std::string second = (dir / "restart-2.replay").string();
+  const std::string third = (dir / "restart-3.replay").string();
+  for (const std::string& p : {path, second, third}) fs::remove(p);
   GameSession session(lotConfig(path));
+  EXPECT_EQ(session.attempt(), 1);
+  EXPECT_EQ(session.recordPath(), path);
   for (int i = 0; i < 50; ++i) session.step({true, false, false, false});
   session.restart();
   EXPECT_EQ(session.world().frame(), 0);
+  EXPECT_EQ(session.attempt(), 2);
+  EXPECT_EQ(session.recordPath(), second);
   EXPECT_TRUE(session.recording());
   for (int i = 0; i < 7; ++i) session.step({});
+  session.restart();
+  for (int i = 0; i < 3; ++i) session.step({false, false, true, false});
+  ASSERT_EQ(session.finishRecording(), "");
+  // Each attempt kept its own file, with its own frames.
+  const std::pair<std::string, std::int64_t> expected[] = {{path, 50}, {second, 7}, {third, 3}};
+  for (const auto& [file, frames] : expected) {
+    const Parsed<Replay> replay = loadReplay(file);
+    ASSERT_TRUE(replay.ok()) << file;
+    EXPECT_EQ(replay.value().totalFrames(), frames) << file;
+  }
+  EXPECT_TRUE(loadReplay(path).value().runs.at(0).keys.up);
+  EXPECT_TRUE(loadReplay(third).value().runs.at(0).keys.left);
+}
+
+TEST(GameSession, RestartAfterGameOverKeepsTheEndedRun) {
+  const fs::path dir = fs::temp_directory_path() / "cardemo_session_test";
+  fs::create_directories(dir);
+  const std::string path = (dir / "ended.replay").string();
+  const std::string second = (dir / "ended-2.replay").string();
+  fs::remove(path);
+  fs::remove(second);
+  SessionConfig config = lotConfig(path);
+  config.scene.player.health = 1;
+  GameSession session(std::move(config));
+  for (int i = 0; i < 3000 && !session.world().gameOver(); ++i) session.step({true});
+  ASSERT_TRUE(session.world().gameOver());
+  const std::uint64_t ended_hash = session.world().stateHash();
+  const std::int64_t ended_frames = session.world().frame();
+  session.restart();
+  for (int i = 0; i < 10; ++i) session.step({});
   ASSERT_EQ(session.finishRecording(), "");
   const Parsed<Replay> replay = loadReplay(path);
   ASSERT_TRUE(replay.ok());
-  EXPECT_EQ(replay.value().totalFrames(), 7);
+  Parsed<Scene> scene = loadReplayScene(replay.value(), path, "");
+  ASSERT_TRUE(scene.ok());
+  Scene s = std::move(scene).value();
+  s.player.health = 1;
+  World world(std::move(s), settingsForReplay(replay.value()));
+  runReplayInputs(world, replay.value());
+  EXPECT_EQ(world.frame(), ended_frames);
+  EXPECT_EQ(world.stateHash(), ended_hash);
+  EXPECT_TRUE(fs::exists(second));
 }
 
 TEST(GameSession, GameOverFreezesAndFinishesTheRecording) {
@@ -85,6 +130,7 @@ TEST(GameSession, GameOverFreezesAndFinishesTheRecording) {
   GameSession session(std::move(config));
   for (int i = 0; i < 3000 && !session.world().gameOver(); ++i) session.step({true});
   ASSERT_TRUE(session.world().gameOver());
+  EXPECT_TRUE(session.ended());
   EXPECT_FALSE(session.recording());
   EXPECT_TRUE(fs::exists(path));
   const std::int64_t frame = session.world().frame();

@@ -32,6 +32,7 @@ TEST(InputLatch, EveryKeyMapsToItsField) {
       {DriveKey::kDown, {false, true, false, false}},
       {DriveKey::kLeft, {false, false, true, false}},
       {DriveKey::kRight, {false, false, false, true}},
+      {DriveKey::kHandbrake, {false, false, false, false, true}},
   };
   for (const auto& [key, expected] : cases) {
     InputLatch latch;

@@ -46,16 +46,17 @@ TEST(Recorder, MergesRunsAndPublishesOnFinish) {
     for (int i = 0; i < 5; ++i) rec.record(kUp);
     for (int i = 0; i < 3; ++i) rec.record(kUpLeft);
     rec.record(kNone);
+    rec.record({false, false, true, true, true});
     EXPECT_FALSE(fs::exists(out));
     EXPECT_TRUE(fs::exists(dir / "drive.replay.part"));
-    EXPECT_EQ(rec.frames(), 9);
+    EXPECT_EQ(rec.frames(), 10);
     EXPECT_EQ(rec.finish("expect health 100\n"), "");
     EXPECT_EQ(rec.finish(), "");  // idempotent
   }
   EXPECT_FALSE(fs::exists(dir / "drive.replay.part"));
   const std::string text = slurp(out);
   EXPECT_EQ(text,
-            "cardemo-replay 1\nscene lot.json\nhz 120\n# frames  keys\n5 U\n3 UL\n1 .\n"
+            "cardemo-replay 1\nscene lot.json\nhz 120\n# frames  keys\n5 U\n3 UL\n1 .\n1 LRH\n"
             "expect health 100\n");
 }
 
@@ -88,7 +89,7 @@ TEST(Recorder, RoundTripsRandomInputs) {
   for (int i = 0; i < 5000; ++i) {
     seed = seed * 1664525u + 1013904223u;
     if ((seed >> 24) < 20)
-      current = InputFrame::fromBits(static_cast<std::uint8_t>(seed >> 8 & 15));
+      current = InputFrame::fromBits(static_cast<std::uint8_t>(seed >> 8 & 31));  // with H
     inputs.push_back(current);
   }
   {
