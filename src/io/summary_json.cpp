@@ -17,7 +17,11 @@ nlohmann::json hzJson(double hz) {
 nlohmann::json summaryJson(const World& world) {
   nlohmann::json hits = nlohmann::json::array();
   for (const HitEvent& h : world.hits()) {
-    hits.push_back({{"frame", h.frame}, {"id", h.id}, {"speed", h.speed}, {"damage", h.damage}});
+    hits.push_back({{"frame", h.frame},
+                    {"id", h.id},
+                    {"speed", h.speed},
+                    {"damage", h.damage},
+                    {"crash", h.crash}});
   }
   const CarState& car = world.car();
   const WorldStats& s = world.stats();
@@ -28,6 +32,8 @@ nlohmann::json summaryJson(const World& world) {
       {"health", world.health()},
       {"game_over", world.gameOver()},
       {"hits", hits},
+      {"crashes", world.crashes()},
+      {"scrape_damage", world.scrapeDamage()},
       {"final",
        {{"x", car.position.x()},
         {"y", car.position.y()},
