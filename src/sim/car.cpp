@@ -136,10 +136,11 @@ CarState slideCar(CarState next, const CarState& steered, bool handbrake, const 
 CarState integrateCar(const CarState& state, const InputFrame& input, const CarParams& params,
                       double dt) {
   CarState steered = state;
-  const double lock = effectiveLock(params, state.speed, input.handbrake);
   double target = 0.0;
-  if (input.left && !input.right) target = lock;
-  if (input.right && !input.left) target = -lock;
+  if (input.left != input.right) {  // the lock (an atan at speed) only matters when steering
+    const double lock = effectiveLock(params, state.speed, input.handbrake);
+    target = input.left ? lock : -lock;
+  }
   steered.steer = approach(state.steer, target, params.steer_rate * dt);
 
   CarState next;
