@@ -28,6 +28,6 @@ shot() {  # shot NAME INPUT [render options...]
 
 shot parking-lot assets/scenes/parking-lot.json --center 0 0 --zoom 8.5
 shot demo assets/replays/demo.replay --frame 330 --zoom 18
-shot demo-debug assets/replays/demo.replay --frame 1472 --zoom 24 --debug
+shot demo-debug assets/replays/demo.replay --frame 1190 --zoom 24 --debug
 shot garage assets/replays/garage.replay --frame 300 --zoom 26
 shot help assets/scenes/garage.json --zoom 26 --help-panel
