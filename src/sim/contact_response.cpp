@@ -51,6 +51,30 @@ void setVelocity(CarState& car, double vx, double vy, double size_before) {
   car.slip = std::abs(slip) <= residue ? 0.0 : slip;
 }
 
+// A wall across one world axis: whether the car closed on it, and the friction (m/s) it takes off
+// the other component.
+struct WallHit {
+  bool closing = false;
+  double friction = 0.0;
+};
+
+// `along` is the velocity component on the wall's axis and `side` (+1 or -1) the direction of the
+// wall from the car; the same arithmetic as removeClosingPart for that normal.
+WallHit bounceOffWall(double& along, double side, const CarParams& params) {
+  const double vn = along * side;
+  if (!(vn > 0.0)) return {};
+  const double restitution = vn > params.bounce_threshold ? params.restitution : 0.0;
+  along = 0.0 - restitution * vn * side;
+  return {true, params.contact_friction * ((1.0 + restitution) * vn)};
+}
+
+// The component along a wall less its friction, never past 0 (removeClosingPart's `kept`).
+double slideAlong(double tangential, double friction) {
+  const double size = std::abs(tangential);
+  const double kept = size > friction ? (size - friction) / size : 0.0;
+  return tangential * kept;
+}
+
 double sizeOf(const CarState& car) {
   return std::abs(car.speed) + std::abs(car.slip);
 }
@@ -87,27 +111,29 @@ bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls,
                      Eigen::Vector2d& normal) {
   const Aabb2 box = carBox(car, params).aabb();
   double dx = 0.0, dy = 0.0;
-  // Both walls act on the same world velocity, and the result goes back into the car's frame once:
-  // a corner gives the same answer whichever wall is "x" up to the order of the two friction
-  // losses (a quarter turn of the scene swaps them).
+  // Each wall bounces its own component and its friction slows the other one, both worked out from
+  // the velocity before the walls, so a corner gives the same answer whichever wall is "x" (a
+  // quarter turn of the scene swaps them). One wall alone is exactly removeClosingPart.
   const Eigen::Vector2d v = car.velocity();
   double vx = v.x(), vy = v.y();
-  bool slowed = false;
+  WallHit x_wall, y_wall;
   if (box.min.x() < walls.min.x()) {
     dx = walls.min.x() - box.min.x();
-    slowed = removeClosingPart(vx, vy, Eigen::Vector2d(-1.0, 0.0), params) || slowed;
+    x_wall = bounceOffWall(vx, -1.0, params);
   } else if (box.max.x() > walls.max.x()) {
     dx = walls.max.x() - box.max.x();
-    slowed = removeClosingPart(vx, vy, Eigen::Vector2d(1.0, 0.0), params) || slowed;
+    x_wall = bounceOffWall(vx, 1.0, params);
   }
   if (box.min.y() < walls.min.y()) {
     dy = walls.min.y() - box.min.y();
-    slowed = removeClosingPart(vx, vy, Eigen::Vector2d(0.0, -1.0), params) || slowed;
+    y_wall = bounceOffWall(vy, -1.0, params);
   } else if (box.max.y() > walls.max.y()) {
     dy = walls.max.y() - box.max.y();
-    slowed = removeClosingPart(vx, vy, Eigen::Vector2d(0.0, 1.0), params) || slowed;
+    y_wall = bounceOffWall(vy, 1.0, params);
   }
-  if (slowed) setVelocity(car, vx, vy, sizeOf(car));
+  if (x_wall.closing) vy = slideAlong(vy, x_wall.friction);
+  if (y_wall.closing) vx = slideAlong(vx, y_wall.friction);
+  if (x_wall.closing || y_wall.closing) setVelocity(car, vx, vy, sizeOf(car));
   if (dx == 0.0 && dy == 0.0) return false;
   // Pushed by +dx off the wall at -x: that wall's normal (from the car) is -x.
   if (std::abs(dx) >= std::abs(dy)) {
