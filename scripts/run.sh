@@ -15,4 +15,4 @@ fi
 echo "No display: replaying the demo drive headless instead of opening the window."
 "$build/cardemo" replay "$root/assets/replays/demo.replay"
 picture="$build/demo-frame.png"
-"$build/cardemo" render "$root/assets/replays/demo.replay" --frame 1472 --debug --out "$picture"
+"$build/cardemo" render "$root/assets/replays/demo.replay" --frame 1190 --debug --out "$picture"

@@ -30,6 +30,6 @@ shot parking-lot assets/scenes/parking-lot.json --center 0 0 --zoom 8.5 --sprite
 shot level assets/replays/level-3-parallel.replay --frame 200 --rig --sprites
 shot crash assets/replays/head-on.replay --frame 866 --rig --zoom 30 --sprites
 shot demo assets/replays/demo.replay --frame 330 --zoom 18 --rig
-shot demo-debug assets/replays/demo.replay --frame 1472 --zoom 24 --debug --rig
+shot demo-debug assets/replays/demo.replay --frame 1190 --zoom 24 --debug --rig
 shot garage assets/replays/garage.replay --frame 300 --zoom 26 --rig --sprites
 shot help assets/scenes/garage.json --zoom 26 --help-panel --rig

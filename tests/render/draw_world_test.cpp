@@ -297,8 +297,11 @@ TEST(Hud, HealthBarFillIsProportionalToHealth) {
 }
 
 TEST(Hud, HealthBarInTheFrameFollowsTheWorldsHealth) {
-  // Overlapping A at frame 0 is a hit at frame 0, so health starts below the maximum.
-  World world(sceneWith({parkedCar("A", 3.0, 0, 90)}));
+  // Overlapping A at frame 0 while driving into it at 5 m/s is a hit at frame 0 (above the damage
+  // threshold), so health starts below the maximum.
+  Scene scene = sceneWith({parkedCar("A", 3.0, 0, 90)});
+  scene.player.speed = 5.0;
+  World world(std::move(scene));
   ASSERT_LT(world.health(), 100);
   Camera camera;
   const RecordingCanvas canvas = drawn(world, camera);
@@ -339,6 +342,7 @@ TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
 TEST(Hud, GameOverPanelAtZeroHealth) {
   Scene scene = sceneWith({parkedCar("A", 3.0, 0, 90)});
   scene.player.health = 1;
+  scene.player.speed = 5.0;  // a hit above the damage threshold
   World world(std::move(scene));
   ASSERT_TRUE(world.gameOver());
   Camera camera;
