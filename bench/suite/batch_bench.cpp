@@ -8,8 +8,8 @@
 
 #include "bench_registry.hpp"
 #include "geometry/batch_path.hpp"
-#include "geometry/obb2_batch.hpp"
-#include "geometry/obb3_batch.hpp"
+#include "kernels/obb2_batch.hpp"
+#include "kernels/obb3_batch.hpp"
 #include "geometry/sat_obb2.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
