@@ -8,12 +8,15 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${CARDEMO_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 jobs=$(nproc)
-start=$(date +%s)
-# Benchmarks are not tests: left out here to save build time.
+# shellcheck source=scripts/lib.sh
+. "$root/scripts/lib.sh"
+stage_begin "sanitize"
+# Benchmarks are not tests: left out here to save build time. The fuzz targets link the same
+# (sanitized, coverage-instrumented) libraries as the tests, so the core is compiled once.
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_WERROR=ON \
-  -DCARDEMO_SANITIZE=ON -DCARDEMO_FUZZ=ON -DCARDEMO_BUILD_BENCH=OFF >/dev/null
+  -DCARDEMO_SANITIZE=ON -DCARDEMO_FUZZ=ON -DCARDEMO_BUILD_BENCH=OFF "${cardemo_launcher[@]}" >/dev/null
 cmake --build "$build" -j"$jobs"
-built=$(date +%s)
+stage_step build
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # The random-case classes run at a tenth of their count (the full counts run in the plain build);
@@ -23,6 +26,6 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 export CARDEMO_TEST_SCALE=${CARDEMO_TEST_SCALE:-0.1}
 ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE platform ${CARDEMO_CTEST_ARGS:-}
 ctest --test-dir "$build" --output-on-failure -j1 -L platform --repeat until-pass:3 ${CARDEMO_CTEST_ARGS:-}
-tested=$(date +%s)
+stage_step ctest
 CARDEMO_FUZZ_BUILD_DIR="$build" "$root/scripts/fuzz.sh" "${CARDEMO_FUZZ_SECONDS:-60}"
-echo "sanitize stage: build $((built - start)) s, ctest $((tested - built)) s, fuzz $(($(date +%s) - tested)) s"
+stage_step fuzz
