@@ -11,9 +11,12 @@ fi
 
 # CPU seconds (user+sys) used so far by this shell's finished children, from bash's `times` (run in
 # this shell, not in a command substitution, whose subshell has children of its own).
-cardemo_times=$(mktemp)
-trap 'rm -f "$cardemo_times" "$cardemo_times.now"' EXIT
+cardemo_times=""
 cpu_seconds() {
+  if [ -z "$cardemo_times" ]; then
+    cardemo_times=$(mktemp)
+    trap 'rm -f "$cardemo_times" "$cardemo_times.now"' EXIT
+  fi
   times >"$cardemo_times"
   tail -1 "$cardemo_times" | awk '{
     t = 0
@@ -24,6 +27,7 @@ cpu_seconds() {
 
 # stage_begin NAME / stage_step PART / stage_end: a stage's banner, then its wall and CPU time.
 stage_begin() {
+  cpu_seconds >/dev/null # creates the scratch file in this shell
   cpu_seconds >"$cardemo_times.now"
   stage_name=$1 stage_wall=$SECONDS stage_cpu=$(<"$cardemo_times.now")
   step_wall=$SECONDS step_cpu=$stage_cpu
