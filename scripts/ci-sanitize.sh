@@ -4,16 +4,26 @@
 # included: clang plus sanitizers must reproduce them); then every fuzz target for
 # CARDEMO_FUZZ_SECONDS (default 60) from the committed corpus, two at a time. Fails on any test
 # failure, sanitizer finding or fuzz crash. CARDEMO_SANITIZE_BUILD_DIR sets the build folder.
+#   scripts/ci-sanitize.sh [build|test]   build: configure and build only; test: build (a no-op
+#                                         when built) then the tests and the fuzzers; default both.
+# In `test`, the window tests (label platform, one at a time) run beside the fuzzers, which run at
+# the lowest priority (nice 19): the window tests mostly wait on wall-clock time, and the fuzzers
+# use the CPU they leave.
 set -euo pipefail
+phase=${1:-all}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${CARDEMO_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 jobs=$(nproc)
-start=$(date +%s)
-# Benchmarks are not tests: left out here to save build time.
+# shellcheck source=scripts/lib.sh
+. "$root/scripts/lib.sh"
+stage_begin "sanitize ($phase)"
+# Benchmarks are not tests: left out here to save build time. The fuzz targets link the same
+# (sanitized, coverage-instrumented) libraries as the tests, so the core is compiled once.
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_WERROR=ON \
-  -DCARDEMO_SANITIZE=ON -DCARDEMO_FUZZ=ON -DCARDEMO_BUILD_BENCH=OFF >/dev/null
+  -DCARDEMO_SANITIZE=ON -DCARDEMO_FUZZ=ON -DCARDEMO_BUILD_BENCH=OFF "${cardemo_launcher[@]}" >/dev/null
 cmake --build "$build" -j"$jobs"
-built=$(date +%s)
+stage_step build
+[ "$phase" = build ] && exit 0
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # The random-case classes run at a tenth of their count (the full counts run in the plain build);
@@ -22,7 +32,14 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # finding is deterministic and fails every try).
 export CARDEMO_TEST_SCALE=${CARDEMO_TEST_SCALE:-0.1}
 ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE platform ${CARDEMO_CTEST_ARGS:-}
-ctest --test-dir "$build" --output-on-failure -j1 -L platform --repeat until-pass:3 ${CARDEMO_CTEST_ARGS:-}
-tested=$(date +%s)
-CARDEMO_FUZZ_BUILD_DIR="$build" "$root/scripts/fuzz.sh" "${CARDEMO_FUZZ_SECONDS:-60}"
-echo "sanitize stage: build $((built - start)) s, ctest $((tested - built)) s, fuzz $(($(date +%s) - tested)) s"
+stage_step "ctest (all but platform)"
+CARDEMO_FUZZ_BUILD_DIR="$build" nice -n 19 "$root/scripts/fuzz.sh" "${CARDEMO_FUZZ_SECONDS:-60}" \
+  >"$build/fuzz.log" 2>&1 &
+fuzz=$!
+platform=0
+ctest --test-dir "$build" --output-on-failure -j1 -L platform --repeat until-pass:3 \
+  ${CARDEMO_CTEST_ARGS:-} || platform=$?
+wait "$fuzz" && fuzzed=0 || fuzzed=$?
+cat "$build/fuzz.log"
+stage_step "ctest (platform) beside the fuzzers"
+[ "$platform" -eq 0 ] && [ "$fuzzed" -eq 0 ]

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang, ASan+UBSan) and runs each for SECONDS (default 60), two at a
-# time, from its committed seed corpus (fuzz/corpus/NAME) with its dictionary (fuzz/dict/NAME.dict).
+# Builds the libFuzzer targets (clang, ASan+UBSan) and runs each for SECONDS (default 60; CI runs
+# 20, see scripts/test.sh), two at a time, from its committed seed corpus (fuzz/corpus/NAME) with its
+# dictionary (fuzz/dict/NAME.dict).
 #   scripts/fuzz.sh [SECONDS] [TARGET...]      TARGET: scene_json replay_text pair_csv sat2 sat3
 # New corpus entries go to BUILD/fuzz-work/NAME (never into the repository); crashes, leaks, hangs
 # and failed properties are saved as BUILD/fuzz-crashes/NAME-*, and the script then exits 1.
@@ -20,8 +21,11 @@ build="${CARDEMO_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 jobs=${CARDEMO_FUZZ_JOBS:-2}
 
 if ! grep -q '^CARDEMO_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  # shellcheck source=scripts/lib.sh
+  . "$root/scripts/lib.sh"
   CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_FUZZ=ON \
-    -DCARDEMO_BUILD_TESTS=OFF -DCARDEMO_BUILD_BENCH=OFF -DCARDEMO_WITH_SDL=OFF -DCARDEMO_WITH_BOX2D=OFF >/dev/null
+    -DCARDEMO_BUILD_TESTS=OFF -DCARDEMO_BUILD_BENCH=OFF -DCARDEMO_WITH_SDL=OFF -DCARDEMO_WITH_BOX2D=OFF \
+    "${cardemo_launcher[@]}" >/dev/null
 fi
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
 

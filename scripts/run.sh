@@ -6,8 +6,11 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/ensure-packages.sh" $(grep -v '^#' "$root/scripts/packages.txt")
+# shellcheck source=scripts/lib.sh
+. "$root/scripts/lib.sh"
 build="${CARDEMO_BUILD_DIR:-$root/build}"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_BUILD_TESTS=OFF >/dev/null
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_BUILD_TESTS=OFF \
+  "${cardemo_launcher[@]}" >/dev/null
 cmake --build "$build" --target cardemo -j"$(nproc)"
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$build/cardemo" play "$root/assets/scenes/parking-lot.json" "$@"

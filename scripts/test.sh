@@ -1,21 +1,72 @@
 #!/usr/bin/env bash
-# Installs what the tests need, configures, builds and runs every test (ctest), then checks that the
-# golden replays give the same hashes with GCC and Clang in Debug and Release (determinism).
+# The README's test command and CI's (.ci/run). Installs what the tests need, then:
+#   1. GCC RelWithDebInfo: builds everything (cardemo, tests, benchmarks) and runs every CTest test
+#      (the golden replays here give the GCC RelWithDebInfo hashes; valgrind on two replays; the
+#      window end-to-end tests under Xvfb; the benchmark smoke runs on every batch path);
+#   2. determinism: the golden hashes again from `cardemo` alone in GCC Debug, GCC Release and
+#      Clang Release (scripts/check-determinism.sh), built beside stage 1's tests, as is the
+#      sanitizer tree of stage 3;
+#   3. Clang ASan+UBSan, with the fuzz targets in the same tree: every CTest test, then every fuzz
+#      target for CARDEMO_FUZZ_SECONDS (default 20 here; scripts/fuzz.sh alone runs 60 s or more)
+#      beside the window tests (scripts/ci-sanitize.sh).
+# Each stage prints its wall time and the CPU time (user+sys) of everything it ran (stage 1's
+# includes the builds that ran beside its tests; those print their own).
+#
+# Usage: scripts/test.sh [--quick]
+#   --quick   stage 1 only, without the slow labels (valgrind, stress, the window tests under
+#             Xvfb): the edit-test loop. Incremental: reuses the build folder.
+# Environment: CARDEMO_BUILD_DIR (default build-test; the other stages use BUILD-determinism and
+# BUILD-sanitize), CARDEMO_CTEST_ARGS (extra ctest arguments for stage 1), CARDEMO_FUZZ_SECONDS.
+# ccache is used for every build when it is installed (scripts/packages.txt installs it).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+quick=0
+case "${1:-}" in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
+esac
 "$root/scripts/ensure-packages.sh" $(grep -v '^#' "$root/scripts/packages.txt")
+# shellcheck source=scripts/lib.sh
+. "$root/scripts/lib.sh"
 jobs=$(nproc)
 build="${CARDEMO_BUILD_DIR:-$root/build-test}"
-stage() { printf '\n== %s (%ds since start)\n' "$1" "$SECONDS"; }
+sanitize="${CARDEMO_SANITIZE_BUILD_DIR:-$build-sanitize}"
 
-stage "GCC RelWithDebInfo: build and every CTest test"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_WERROR=ON
+stage_begin "GCC RelWithDebInfo: build and every CTest test"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_WERROR=ON \
+  "${cardemo_launcher[@]}" >/dev/null
 cmake --build "$build" -j"$jobs"
-ctest --test-dir "$build" --output-on-failure -j"$jobs" ${CARDEMO_CTEST_ARGS:-}
+stage_step "build"
+if [ "$quick" -eq 1 ]; then
+  ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE 'valgrind|stress|platform' \
+    ${CARDEMO_CTEST_ARGS:-}
+  stage_end
+  exit 0
+fi
+# The GCC suite spends much of its wall time waiting (the window tests hold keys for real seconds,
+# the recording-kill test stops the game at random moments, valgrind runs alone at the end), so the
+# next stages' builds (determinism, then the sanitizer tree) run beside it at the lowest priority
+# (nice 19): the tests get the CPU whenever they want it, the builds take what is left. Their output
+# goes to BUILD-background.log, printed after the suite.
+background="$build-background.log"
+(
+  nice -n 19 "$root/scripts/check-determinism.sh" "$build-determinism" &&
+    CARDEMO_SANITIZE_BUILD_DIR="$sanitize" nice -n 19 "$root/scripts/ci-sanitize.sh" build
+) >"$background" 2>&1 &
+builds=$!
+suite=0
+ctest --test-dir "$build" --output-on-failure -j"$jobs" ${CARDEMO_CTEST_ARGS:-} || suite=$?
+stage_step "ctest"
+built=0
+wait "$builds" || built=$?
+cat "$background"
+stage_end
+[ "$suite" -eq 0 ] || { echo "the GCC suite failed" >&2; exit 1; }
+[ "$built" -eq 0 ] || { echo "the determinism check or the sanitizer build failed" >&2; exit 1; }
 
-stage "Determinism: golden hashes with GCC Debug, GCC Release, Clang Release"
-"$root/scripts/check-determinism.sh" "$build-determinism"
-
-stage "Clang ASan+UBSan: every CTest test, then every fuzz target for 60 s"
-"$root/scripts/ci-sanitize.sh"
-stage "done"
+stage_begin "Clang ASan+UBSan: every CTest test, then every fuzz target"
+CARDEMO_SANITIZE_BUILD_DIR="$sanitize" CARDEMO_FUZZ_SECONDS="${CARDEMO_FUZZ_SECONDS:-20}" \
+  "$root/scripts/ci-sanitize.sh" test
+stage_end
+printf '\n== done: %d s wall\n' "$SECONDS"

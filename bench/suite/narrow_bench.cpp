@@ -8,9 +8,9 @@
 
 #include "bench_registry.hpp"
 #include "geometry/convex_polygon.hpp"
-#include "geometry/manifold2.hpp"
 #include "geometry/obb3.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "kernels/manifold2.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
 #include "compare/box2d/box2d_shapes.hpp"

@@ -1,14 +1,14 @@
 #pragma once
 // The integrator study's runs: game parameters, inputs held, and a closed-form answer for each
-// (src/sim/car_closed_form.hpp). The tests in tests/sim use harsher parameters to expose orders;
-// these are what a player does.
+// (src/kernels/car_closed_form.hpp). The tests in tests/sim use harsher parameters to expose
+// orders; these are what a player does.
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "kernels/car_closed_form.hpp"
 #include "sim/car.hpp"
-#include "sim/car_closed_form.hpp"
 
 namespace cardemo::tradeoff {
 

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "app/commands.hpp"
 #include "io/replay_runner.hpp"
 #include "io/scene_json.hpp"
+#include "platform/asset_folders.hpp"
 #include "platform/game_window.hpp"
 #include "platform/scene_picker.hpp"
 #include "play/best_scores.hpp"
@@ -34,24 +36,8 @@ struct PlayOptions {
 
 constexpr const char* kDefaultScene = "scenes/parking-lot.json";
 
-// The bundled lot: $CARDEMO_ASSETS first, then next to the executable (installed or build tree).
-std::vector<fs::path> assetFolders() {
-  std::vector<fs::path> folders;
-  if (const char* env = std::getenv("CARDEMO_ASSETS"); env != nullptr && *env != '\0') {
-    folders.emplace_back(env);
-  }
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path dir = exe.parent_path();
-    folders.push_back(dir / "../assets");
-    folders.push_back(dir / "../../assets");
-    folders.push_back(dir / "../share/cardemo/assets");
-  }
-  return folders;
-}
-
-// The first assets folder that holds the bundled lot, or empty.
+// The first assets folder (platform/asset_folders: $CARDEMO_ASSETS, then next to the executable)
+// that holds the bundled lot, or empty.
 std::string findAssetsFolder() {
   for (const fs::path& folder : assetFolders()) {
     std::error_code ec;
@@ -125,6 +111,7 @@ int runPlayCommand(const PlayOptions& options) {
   session.record_path = options.record_path;
 
   std::string scene_path = options.scene_path;
+  std::optional<Parsed<Scene>> replay_scene;  // the replay's own scene, when SCENE is not given
   if (!options.replay_path.empty()) {
     Parsed<Replay> replay = loadReplay(options.replay_path);
     if (!replay.ok()) {
@@ -138,6 +125,7 @@ int runPlayCommand(const PlayOptions& options) {
         return 2;
       }
       scene_path = replay.value().scene_resolved;
+      replay_scene = loadSceneOfReplay(replay.value(), options.replay_path);
     }
     session.settings = settingsForReplay(replay.value());
     session.playback = std::move(replay).value().runs;
@@ -147,7 +135,7 @@ int runPlayCommand(const PlayOptions& options) {
     scene_path = pickScene(status);
     if (scene_path.empty()) return status;
   }
-  Parsed<Scene> scene = loadScene(scene_path);
+  Parsed<Scene> scene = replay_scene ? std::move(*replay_scene) : loadScene(scene_path);
   if (!scene.ok()) {
     std::fprintf(stderr, "%s\n", scene.error().toString().c_str());
     return 2;

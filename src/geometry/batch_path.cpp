@@ -8,6 +8,40 @@
 namespace cardemo {
 namespace {
 
+// The path CARDEMO_BATCH_PATH names, read once: no wider path counts as available, as on a CPU
+// without it (so a machine with AVX-512 can run everything as a CPU without it would).
+BatchPath ceiling() {
+  static const BatchPath named = [] {
+    const char* name = std::getenv("CARDEMO_BATCH_PATH");
+    if (name != nullptr) {
+      for (const BatchPath path : {BatchPath::kPortable, BatchPath::kAvx2}) {
+        if (std::strcmp(name, batchPathName(path)) == 0) return path;
+      }
+    }
+    return BatchPath::kAvx512;
+  }();
+  return named;
+}
+
+// True when this build has `path` and the CPU can run it.
+bool cpuCanRun(BatchPath path) {
+  if (path == BatchPath::kPortable) return true;
+#if defined(__x86_64__) || defined(__i386__)
+  // The AVX2 kernels also use FMA (the error-free products of the 3D edge axes, the float
+  // pre-filter); on the AVX-512 path the grid scan keeps its AVX2 version, so it needs all three.
+  // GCC's check includes the operating system's support for the wider registers (XGETBV).
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#if defined(CARDEMO_BATCH_AVX2)
+  if (path == BatchPath::kAvx2) return avx2;
+#endif
+#if defined(CARDEMO_BATCH_AVX2) && defined(CARDEMO_BATCH_AVX512)
+  if (path == BatchPath::kAvx512) return avx2 && __builtin_cpu_supports("avx512f");
+#endif
+  (void)avx2;
+#endif
+  return false;
+}
+
 // The widest available path at or below `wanted`.
 BatchPath widestUpTo(BatchPath wanted) {
   if (wanted == BatchPath::kAvx512 && batchPathAvailable(BatchPath::kAvx512)) {
@@ -27,21 +61,7 @@ std::atomic<BatchPath>& chosenPath() {
 }  // namespace
 
 bool batchPathAvailable(BatchPath path) {
-  if (path == BatchPath::kPortable) return true;
-#if defined(__x86_64__) || defined(__i386__)
-  // The AVX2 kernels also use FMA (the error-free products of the 3D edge axes, the float
-  // pre-filter); on the AVX-512 path the grid scan keeps its AVX2 version, so it needs all three.
-  // GCC's check includes the operating system's support for the wider registers (XGETBV).
-  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-#if defined(CARDEMO_BATCH_AVX2)
-  if (path == BatchPath::kAvx2) return avx2;
-#endif
-#if defined(CARDEMO_BATCH_AVX2) && defined(CARDEMO_BATCH_AVX512)
-  if (path == BatchPath::kAvx512) return avx2 && __builtin_cpu_supports("avx512f");
-#endif
-  (void)avx2;
-#endif
-  return false;
+  return static_cast<int>(path) <= static_cast<int>(ceiling()) && cpuCanRun(path);
 }
 
 BatchPath batchPathNamed(const char* name) {

@@ -11,12 +11,12 @@ enum class BatchPath {
   kAvx512,    ///< AVX-512F for the 2D and 3D kernels (eight doubles, sixteen floats).
 };
 
-/// True when `path` was built and the CPU can run it.
+/// True when `path` was built, the CPU can run it and CARDEMO_BATCH_PATH names no narrower path
+/// (`avx2` makes a CPU with AVX-512 behave as one without it; `portable` as one without either).
 [[nodiscard]] bool batchPathAvailable(BatchPath path);
 
-/// The path in use: the widest available, unless the environment variable CARDEMO_BATCH_PATH
-/// names another (`portable`, `avx2` or `avx512`) at the first call, or setBatchPath chose
-/// otherwise. A named path the CPU cannot run gives the widest available one below it.
+/// The path in use: the widest available (see batchPathAvailable for CARDEMO_BATCH_PATH), unless
+/// setBatchPath chose another.
 [[nodiscard]] BatchPath batchPath();
 
 /// The path that CARDEMO_BATCH_PATH=`name` selects: the widest available one at or below the

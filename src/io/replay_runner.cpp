@@ -6,14 +6,39 @@
 
 namespace cardemo {
 
+namespace {
+
+// `path` loaded; an error about the file as a whole (line 0: missing, unreadable, too large) is
+// moved to `where`, with `named` (how the referrer wrote the path, if not already in `where`)
+// before its message.
+Parsed<Scene> loadSceneReferenced(const std::string& path, InputError where,
+                                  const std::string& named) {
+  Parsed<Scene> scene = loadScene(path);
+  if (scene.ok() || scene.error().line != 0 || scene.error().file != path) return scene;
+  where.message = named.empty() ? scene.error().message : named + ": " + scene.error().message;
+  return where;
+}
+
+}  // namespace
+
+Parsed<Scene> loadSceneOfReplay(const Replay& replay, const std::string& replay_path) {
+  return loadSceneReferenced(replay.scene_resolved, InputError{replay_path, replay.scene_line, ""},
+                             "scene " + replay.scene);
+}
+
+Parsed<Scene> loadSceneOption(const std::string& option, const std::string& path) {
+  // No line: the file part is the option itself, so the message reads `--scene PATH: ...`.
+  return loadSceneReferenced(path, InputError{option + " " + path, 0, ""}, "");
+}
+
 Parsed<Scene> loadReplayScene(const Replay& replay, const std::string& replay_path,
                               const std::string& scene_override) {
-  if (!scene_override.empty()) return loadScene(scene_override);
+  if (!scene_override.empty()) return loadSceneOption("--scene", scene_override);
   if (replay.scene_resolved.empty()) {
     return InputError{replay_path, 1,
                       "the replay names no scene: add a `scene PATH` line or pass --scene"};
   }
-  return loadScene(replay.scene_resolved);
+  return loadSceneOfReplay(replay, replay_path);
 }
 
 WorldSettings settingsForReplay(const Replay& replay) {

@@ -12,10 +12,19 @@
 
 namespace cardemo {
 
-/// Loads the scene a replay names (`scene_override` wins when non-empty). A replay without a scene
-/// and without an override is an error on the replay's line 1.
+/// Loads the scene a replay names (`scene_override`, the --scene option, wins when non-empty). A
+/// replay without a scene and without an override is an error on the replay's line 1; a scene file
+/// that cannot be read is reported where it was named (see loadSceneOfReplay, loadSceneOption).
 [[nodiscard]] Parsed<Scene> loadReplayScene(const Replay& replay, const std::string& replay_path,
                                             const std::string& scene_override);
+
+/// Loads the scene on the replay's `scene` line; an unreadable file is reported on that line:
+/// `REPLAY:LINE: scene PATH: cannot open: ...` (errors inside the scene keep the scene's line).
+[[nodiscard]] Parsed<Scene> loadSceneOfReplay(const Replay& replay, const std::string& replay_path);
+
+/// Loads a scene given by a command-line option; an unreadable file is reported as
+/// `OPTION PATH: cannot open: ...` (errors inside the scene keep the scene's line).
+[[nodiscard]] Parsed<Scene> loadSceneOption(const std::string& option, const std::string& path);
 
 /// World settings for a replay (its `hz`, everything else default).
 [[nodiscard]] WorldSettings settingsForReplay(const Replay& replay);

@@ -186,6 +186,7 @@ class ReplayParser {
       if (scene_line_ != 0) return duplicate("scene", scene_line_);
       if (rest.empty()) return error("scene: missing path");
       scene_line_ = line_;
+      r.scene_line = line_;
       r.scene = std::string(rest);
       r.scene_resolved = resolveScene(r.scene, file_);
       return std::nullopt;

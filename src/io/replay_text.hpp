@@ -39,6 +39,7 @@ struct ReplayExpectations {
 struct Replay {
   std::string scene;  ///< Scene path as written (relative to the replay's folder); may be empty.
   std::string scene_resolved;  ///< Scene path resolved against the replay file's folder.
+  int scene_line = 0;          ///< Line of the `scene` line (0 when there is none).
   int hz = 120;                ///< Fixed steps per second, 1..10000.
   std::vector<InputRun> runs;  ///< Inputs in order.
   ReplayExpectations expect;   ///< Optional expectations.

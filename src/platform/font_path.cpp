@@ -1,8 +1,9 @@
 #include "platform/font_path.hpp"
 
-#include <array>
 #include <cstdlib>
 #include <fstream>
+
+#include "platform/asset_folders.hpp"
 
 namespace cardemo {
 namespace {
@@ -10,6 +11,9 @@ namespace {
 bool readable(const std::string& path) {
   return std::ifstream(path, std::ios::binary).good();
 }
+
+// Debian's fonts-dejavu-core, for an executable run away from its assets folder.
+constexpr const char* kSystemFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 }  // namespace
 
@@ -19,21 +23,15 @@ std::optional<std::string> findFontPath(std::string* why) {
     if (why) *why = std::string("CARDEMO_FONT=") + env + " is not a readable font file";
     return std::nullopt;
   }
-  static constexpr std::array<const char*, 6> kCandidates{
-      "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-      "/usr/share/fonts/TTF/DejaVuSans.ttf",
-      "/usr/share/fonts/dejavu/DejaVuSans.ttf",
-      "/usr/share/fonts/dejavu-sans-fonts/DejaVuSans.ttf",
-      "/usr/local/share/fonts/DejaVuSans.ttf",
-      "/opt/homebrew/share/fonts/DejaVuSans.ttf",
-  };
-  for (const char* path : kCandidates) {
-    if (readable(path)) return std::string(path);
+  for (const std::filesystem::path& folder : assetFolders()) {
+    const std::filesystem::path font = folder / "fonts/DejaVuSans.ttf";
+    if (readable(font.string())) return font.lexically_normal().string();
   }
+  if (readable(kSystemFont)) return std::string(kSystemFont);
   if (why) {
     *why =
-        "no DejaVu font found (looked in /usr/share/fonts): install fonts-dejavu-core or set "
-        "CARDEMO_FONT=/path/to/DejaVuSans.ttf";
+        "no DejaVuSans.ttf in the assets folder (assets/fonts) or in /usr/share/fonts: set "
+        "CARDEMO_ASSETS to the assets folder or CARDEMO_FONT=/path/to/DejaVuSans.ttf";
   }
   return std::nullopt;
 }

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "platform/asset_folders.hpp"
+
 namespace cardemo {
 namespace {
 
@@ -17,6 +19,10 @@ std::optional<std::string> findSpriteDir(std::string* why) {
     if (holdsSprites(env)) return std::string(env);
     if (why) *why = std::string("CARDEMO_SPRITES=") + env + " holds no car.png";
     return std::nullopt;
+  }
+  for (const std::filesystem::path& folder : assetFolders()) {
+    const std::string dir = (folder / "sprites").lexically_normal().string();
+    if (holdsSprites(dir)) return dir;
   }
   for (const char* dir : {"assets/sprites", CARDEMO_SPRITE_DIR}) {
     if (holdsSprites(dir)) return std::string(dir);

@@ -76,6 +76,19 @@ TEST(Cli, BadSceneLineIsReported) {
   EXPECT_NE(r.err.find("length"), std::string::npos) << r.err;
 }
 
+// A missing scene is reported on the line that names it, with both files named.
+TEST(Cli, MissingSceneIsReportedWhereItIsNamed) {
+  const auto p = writeTemp("drive.replay", "cardemo-replay 1\nscene ../scenes/nope.json\n10 U\n");
+  const std::string no_file = ": cannot open: No such file or directory\n";
+  const CliResult r = cardemo("replay " + p.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, p.string() + ":2: scene ../scenes/nope.json" + no_file);
+  const CliResult o =
+      cardemo("replay " + asset("replays/demo.replay") + " --scene /nonexistent/x.json");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "--scene /nonexistent/x.json" + no_file);
+}
+
 TEST(Cli, ReplayWithoutSceneIsAnError) {
   const auto p = writeTemp("noscene.replay", "cardemo-replay 1\n10 U\n");
   const CliResult r = cardemo("replay " + p.string());

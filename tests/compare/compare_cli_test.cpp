@@ -73,6 +73,20 @@ TEST(CompareCli, BadInputExitsTwoWithFileAndLine) {
   EXPECT_EQ(cardemo("compare").status, 2);
 }
 
+// A missing scene is reported on the replay line that names it, or as the option that names it.
+TEST(CompareCli, MissingSceneIsReportedWhereItIsNamed) {
+  const auto p = writeTemp("drive.replay", "cardemo-replay 1\nscene ../scenes/nope.json\n10 U\n");
+  const std::string no_file = ": cannot open: No such file or directory\n";
+  for (const char* command : {"compare ", "compare-world "}) {
+    const CliResult r = cardemo(command + p.string());
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err, p.string() + ":2: scene ../scenes/nope.json" + no_file) << command;
+    const CliResult o = cardemo(command + replay("demo.replay") + " --scene /nonexistent/x.json");
+    EXPECT_EQ(o.status, 2) << command;
+    EXPECT_EQ(o.err, "--scene /nonexistent/x.json" + no_file) << command;
+  }
+}
+
 TEST(CompareCli, CollideOracleColumns) {
   const std::string rows = "-1,0,0,2,2,1,0,0,2,2\n0,0,0,2,2,5,0,0,2,2\n";
   const CliResult r = cardemo("collide - --oracle exact,box2d", rows);

@@ -8,13 +8,13 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "../support/test_scale.hpp"
+
 namespace cardemo::compare {
 namespace {
 
 std::int64_t scaled(std::int64_t full) {
-  const char* s = std::getenv("CARDEMO_TEST_SCALE");
-  const double scale = s != nullptr && std::atof(s) > 0.0 ? std::atof(s) : 1.0;
-  return std::max<std::int64_t>(1000, static_cast<std::int64_t>(static_cast<double>(full) * scale));
+  return testing::scaledCases(full, 1000);
 }
 
 std::int64_t wrong(const SweepReport& r, std::size_t offset, std::size_t bin, Verdict v) {

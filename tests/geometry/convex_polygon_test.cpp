@@ -19,8 +19,6 @@ using testing::Failures;
 using testing::PairStats;
 using testing::Random;
 
-constexpr int kCasesPerClass = 100000;
-
 // --- fromPoints -------------------------------------------------------------------------------
 
 std::optional<ConvexPolygon> build(std::vector<Eigen::Vector2d> points, std::string* why) {
@@ -162,37 +160,25 @@ Shape randomShape(Random& rng, const Eigen::Vector2d& center, double lo, double 
 using PairMaker = std::function<std::pair<Shape, Shape>(Random&)>;
 
 PairStats runClass(std::uint64_t seed, const PairMaker& make, Failures& f) {
-  Random rng(seed);
-  PairStats stats;
-  const int n = testing::scaledCount(kCasesPerClass);
-  for (int i = 0; i < n; ++i) {
-    const auto [a, b] = make(rng);
-    const exact::ExactResult ex = oracle(a, b);
-    const SatResult2 ab = fast(a, b);
-    const SatResult2 ba = fast(b, a);
-    const auto pa = a.points(), pb = b.points();
-    const Eigen::Vector2d ref = a.anchor();
-    testing::checkAgainstExact(ab, ex.hit, ex.separation, pa, pb, ref, i, f, stats);
-    testing::checkAgainstExact(ba, ex.hit, ex.separation, pb, pa, ref, i, f, stats);
-    f.check(std::abs(ab.separation - ba.separation) <= 1e-9, i, "sep not symmetric");
-    f.check(std::abs(testing::signedGap(pa, pb, -ba.normal, ref) - ab.separation) <= 2e-6, i,
-            "reversed normal does not realise sep");
-    if (i % 10 == 0) {
-      Shape apart = b;
-      apart.translate(ab.normal * (1e-5 - ab.separation));
-      f.check(!oracle(a, apart).hit, i, "moving B out along the normal did not separate");
-    }
-    ++stats.cases;
-    stats.exact_hits += ex.hit ? 1 : 0;
-    stats.borderline += std::abs(ex.separation) <= testing::kHitTolerance ? 1 : 0;
-  }
-  return stats;
-}
-
-void report(const Failures& f, const PairStats& s) {
-  EXPECT_EQ(f.count(), 0) << f.report();
-  std::printf("    %d pairs, %d exact hits, %d borderline, max |sep - exact| = %.3g m\n", s.cases,
-              s.exact_hits, s.borderline, s.max_error);
+  return testing::runRandomClass(
+      seed, make, f, [](const Shape& a, const Shape& b, int i, Failures& f, PairStats& stats) {
+        const exact::ExactResult ex = oracle(a, b);
+        const SatResult2 ab = fast(a, b);
+        const SatResult2 ba = fast(b, a);
+        const auto pa = a.points(), pb = b.points();
+        const Eigen::Vector2d ref = a.anchor();
+        testing::checkAgainstExact(ab, ex.hit, ex.separation, pa, pb, ref, i, f, stats);
+        testing::checkAgainstExact(ba, ex.hit, ex.separation, pb, pa, ref, i, f, stats);
+        f.check(std::abs(ab.separation - ba.separation) <= 1e-9, i, "sep not symmetric");
+        f.check(std::abs(testing::signedGap(pa, pb, -ba.normal, ref) - ab.separation) <= 2e-6, i,
+                "reversed normal does not realise sep");
+        if (i % 10 == 0) {
+          Shape apart = b;
+          apart.translate(ab.normal * (1e-5 - ab.separation));
+          f.check(!oracle(a, apart).hit, i, "moving B out along the normal did not separate");
+        }
+        return ex;
+      });
 }
 
 // Vertex of `p` farthest along `d`.
@@ -229,7 +215,7 @@ TEST(ConvexPolygonRandom, GapsOnBothSidesOfTouching) {
   const PairStats s = runClass(
       2001, [](Random& rng) { return nearTouching(rng, rng.direction() * rng.uniform(0, 100)); },
       f);
-  report(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_GT(s.exact_hits, s.cases / 3);
   EXPECT_LT(s.exact_hits, 2 * s.cases / 3);
 }
@@ -247,7 +233,7 @@ TEST(ConvexPolygonRandom, FarFromOrigin) {
         return std::pair{a, b};
       },
       f);
-  report(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_GT(s.exact_hits, s.cases / 10);
 }
 
@@ -272,7 +258,7 @@ TEST(ConvexPolygonRandom, Containment) {
         return std::pair{a, b};
       },
       f);
-  report(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_EQ(s.exact_hits, s.cases) << "every contained pair overlaps";
 }
 
@@ -298,7 +284,7 @@ TEST(ConvexPolygonRandom, ExactTouchingAtAVertex) {
         }
       },
       f);
-  report(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_EQ(s.exact_hits, s.cases);
   EXPECT_EQ(s.max_error, 0.0);
 }

@@ -2,9 +2,13 @@
 /// Seeded random 2D boxes and convex polygons for the property tests (std::mt19937_64, fixed
 /// seeds).
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <numbers>
 #include <random>
@@ -12,18 +16,12 @@
 #include <string>
 #include <vector>
 
+#include "../support/test_scale.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/sat_result.hpp"
 
 namespace cardemo::testing {
-
-/// Test case count scaled by CARDEMO_TEST_SCALE (default 1.0: the full count).
-inline int scaledCount(int full) {
-  const char* s = std::getenv("CARDEMO_TEST_SCALE");
-  const double scale = s != nullptr ? std::atof(s) : 1.0;
-  return std::max(1, static_cast<int>(full * (scale > 0.0 ? scale : 1.0)));
-}
 
 /// Random source with the distributions the cases need.
 class Random {
@@ -155,6 +153,34 @@ struct PairStats {
   int borderline = 0;      ///< Pairs with |exact sep| <= kHitTolerance.
   double max_error = 0.0;  ///< Largest |sep - exact sep| seen, metres.
 };
+
+/// Pairs per random class at full scale (CARDEMO_TEST_SCALE scales it).
+inline constexpr int kCasesPerClass = 100000;
+
+/// Runs one seeded random class: scaledCount(kCasesPerClass) pairs from `make(rng)`; `check(a, b,
+/// index, f, stats)` compares the fast code with the oracle on one pair and returns the oracle's
+/// result, which is counted (cases, exact hits, borderline ones).
+template <class Make, class Check>
+PairStats runRandomClass(std::uint64_t seed, const Make& make, Failures& f, const Check& check) {
+  Random rng(seed);
+  PairStats stats;
+  const int n = scaledCount(kCasesPerClass);
+  for (int i = 0; i < n; ++i) {
+    const auto [a, b] = make(rng);
+    const auto ex = check(a, b, i, f, stats);
+    ++stats.cases;
+    stats.exact_hits += ex.hit ? 1 : 0;
+    stats.borderline += std::abs(ex.separation) <= kHitTolerance ? 1 : 0;
+  }
+  return stats;
+}
+
+/// Expects no failures in a random class and prints its counts.
+inline void expectCleanClass(const Failures& f, const PairStats& s) {
+  EXPECT_EQ(f.count(), 0) << f.report();
+  std::printf("    %d pairs, %d exact hits, %d borderline, max |sep - exact| = %.3g m\n", s.cases,
+              s.exact_hits, s.borderline, s.max_error);
+}
 
 /// Checks one fast SAT result in one argument order against the exact separation and hit.
 /// `points_a`/`points_b` are the shapes' vertices, used to verify that the normal realises sep.

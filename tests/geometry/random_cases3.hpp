@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "../support/test_scale.hpp"
 #include "geometry/obb3.hpp"
 
 namespace cardemo::test3 {
@@ -15,19 +16,8 @@ struct Pair3 {
   Obb3 b;  ///< Second box.
 };
 
-/// Scale factor for case counts from CARDEMO_TEST_SCALE (default 1.0: the full counts).
-inline double testScale() {
-  const char* s = std::getenv("CARDEMO_TEST_SCALE");
-  if (s == nullptr) return 1.0;
-  const double v = std::atof(s);
-  return v > 0.0 ? v : 1.0;
-}
-
-/// `n` scaled by testScale(), at least 1.
-inline int scaledCount(int n) {
-  const int m = static_cast<int>(n * testScale());
-  return m < 1 ? 1 : m;
-}
+using testing::scaledCount;
+using testing::testScale;
 
 /// Uniform in [lo, hi).
 inline double uniform(std::mt19937_64& rng, double lo, double hi) {

@@ -17,8 +17,6 @@ using testing::Failures;
 using testing::PairStats;
 using testing::Random;
 
-constexpr int kCasesPerClass = 100000;
-
 using PairMaker = std::function<std::pair<Obb2, Obb2>(Random&)>;
 
 Obb2 moved(Obb2 b, const Eigen::Vector2d& by) {
@@ -28,38 +26,34 @@ Obb2 moved(Obb2 b, const Eigen::Vector2d& by) {
 
 // Compares collideObb2/overlapObb2 in both orders with the exact oracle over one class of pairs.
 PairStats runClass(std::uint64_t seed, const PairMaker& make, Failures& f) {
-  Random rng(seed);
-  PairStats stats;
-  const int n = testing::scaledCount(kCasesPerClass);
-  for (int i = 0; i < n; ++i) {
-    const auto [a, b] = make(rng);
-    const exact::ExactResult ex = exact::collideObb2(a, b);
-    const SatResult2 ab = collideObb2(a, b);
-    const SatResult2 ba = collideObb2(b, a);
-    const auto ca = a.corners(), cb = b.corners();
-    testing::checkAgainstExact(ab, ex.hit, ex.separation, ca, cb, a.center, i, f, stats);
-    testing::checkAgainstExact(ba, ex.hit, ex.separation, cb, ca, a.center, i, f, stats);
-    f.check(overlapObb2(a, b) == ab.hit && overlapObb2(b, a) == ba.hit, i, "overlapObb2 differs");
-    f.check(std::abs(ab.separation - ba.separation) <= 1e-9, i, "sep not symmetric");
-    // The normal flips: -n(B,A) realises the same separation for (A, B).
-    f.check(std::abs(testing::signedGap(ca, cb, -ba.normal, a.center) - ab.separation) <= 2e-6, i,
-            "reversed normal does not realise sep");
-    if (i % 10 == 0) {
-      // Moving B along the normal by -sep plus a margin leaves a gap on that axis: exactly apart.
-      const double margin = 1e-5;
-      const Obb2 apart = moved(b, ab.normal * (margin - ab.separation));
-      f.check(!exact::collideObb2(a, apart).hit, i,
-              "moving B out along the normal did not separate");
-    }
-    if (i % 100 == 0) {
-      const exact::ExactResult rev = exact::collideObb2(b, a);
-      f.check(rev.hit == ex.hit && rev.separation == ex.separation, i, "oracle not symmetric");
-    }
-    ++stats.cases;
-    stats.exact_hits += ex.hit ? 1 : 0;
-    stats.borderline += std::abs(ex.separation) <= testing::kHitTolerance ? 1 : 0;
-  }
-  return stats;
+  return testing::runRandomClass(
+      seed, make, f, [](const Obb2& a, const Obb2& b, int i, Failures& f, PairStats& stats) {
+        const exact::ExactResult ex = exact::collideObb2(a, b);
+        const SatResult2 ab = collideObb2(a, b);
+        const SatResult2 ba = collideObb2(b, a);
+        const auto ca = a.corners(), cb = b.corners();
+        testing::checkAgainstExact(ab, ex.hit, ex.separation, ca, cb, a.center, i, f, stats);
+        testing::checkAgainstExact(ba, ex.hit, ex.separation, cb, ca, a.center, i, f, stats);
+        f.check(overlapObb2(a, b) == ab.hit && overlapObb2(b, a) == ba.hit, i,
+                "overlapObb2 differs");
+        f.check(std::abs(ab.separation - ba.separation) <= 1e-9, i, "sep not symmetric");
+        // The normal flips: -n(B,A) realises the same separation for (A, B).
+        f.check(std::abs(testing::signedGap(ca, cb, -ba.normal, a.center) - ab.separation) <= 2e-6,
+                i, "reversed normal does not realise sep");
+        if (i % 10 == 0) {
+          // Moving B along the normal by -sep plus a margin leaves a gap on that axis: exactly
+          // apart.
+          const double margin = 1e-5;
+          const Obb2 apart = moved(b, ab.normal * (margin - ab.separation));
+          f.check(!exact::collideObb2(a, apart).hit, i,
+                  "moving B out along the normal did not separate");
+        }
+        if (i % 100 == 0) {
+          const exact::ExactResult rev = exact::collideObb2(b, a);
+          f.check(rev.hit == ex.hit && rev.separation == ex.separation, i, "oracle not symmetric");
+        }
+        return ex;
+      });
 }
 
 // Lateral offset (along `lateral`) of the box's support point in direction `d`, from its centre.
@@ -100,12 +94,6 @@ std::pair<Obb2, Obb2> randomPlacement(Random& rng, const Obb2& a, Obb2 b) {
   return {a, b};
 }
 
-void expectClean(const Failures& f, const PairStats& s) {
-  EXPECT_EQ(f.count(), 0) << f.report();
-  std::printf("    %d pairs, %d exact hits, %d borderline, max |sep - exact| = %.3g m\n", s.cases,
-              s.exact_hits, s.borderline, s.max_error);
-}
-
 TEST(SatObb2Random, GapsOnBothSidesOfTouching) {
   Failures f;
   int on_target = 0;
@@ -124,7 +112,7 @@ TEST(SatObb2Random, GapsOnBothSidesOfTouching) {
         return pair;
       },
       f);
-  expectClean(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_GT(on_target, 8 * (total / 10) / 10)
       << "the construction should mostly realise the chosen gap";
   EXPECT_GT(s.exact_hits, s.cases / 4);
@@ -144,7 +132,7 @@ TEST(SatObb2Random, FarFromOrigin) {
         return randomPlacement(rng, rng.box(base, 0.1, 20.0), rng.box(base, 0.1, 20.0));
       },
       f);
-  expectClean(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_GT(s.exact_hits, s.cases / 10);
 }
 
@@ -164,7 +152,7 @@ TEST(SatObb2Random, ExtremeSizesAndAspectRatios) {
         return randomPlacement(rng, a, b);
       },
       f);
-  expectClean(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_GT(s.exact_hits, s.cases / 10);
 }
 
@@ -184,7 +172,7 @@ TEST(SatObb2Random, NearParallel) {
         return pair;
       },
       f);
-  expectClean(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_GT(s.exact_hits, s.cases / 10);
   EXPECT_LT(s.exact_hits, 9 * s.cases / 10);
 }
@@ -205,7 +193,7 @@ TEST(SatObb2Random, Containment) {
         return std::pair{a, b};
       },
       f);
-  expectClean(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_EQ(s.exact_hits, s.cases) << "every contained pair overlaps";
 }
 
@@ -233,7 +221,7 @@ TEST(SatObb2Random, ExactTouching) {
         return std::pair{a, b};
       },
       f);
-  expectClean(f, s);
+  testing::expectCleanClass(f, s);
   EXPECT_EQ(s.exact_hits, s.cases) << "exact touching counts as a hit";
 }
 

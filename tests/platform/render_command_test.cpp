@@ -5,17 +5,14 @@
 #include <SDL.h>
 #include <SDL_image.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <string>
 
+#include "../support/cli_run.hpp"
 #include "io/scene_json.hpp"
 #include "render/draw_world.hpp"
 
@@ -28,29 +25,17 @@ const std::string kSource = CARDEMO_SOURCE_DIR;
 const std::string kLot = kSource + "/assets/scenes/parking-lot.json";
 const std::string kHeadOn = kSource + "/assets/replays/head-on.replay";
 
-// A folder per test, so tests run in parallel (ctest -j) do not share files.
+// A file in the test's own scratch folder, so tests run in parallel (ctest -j) share no files.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "cardemo-render-test" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::create_directories(dir);
-  return dir / name;
+  return test::scratchDir() / name;
 }
 
-struct CommandResult {
-  int status = -1;
-  std::string err;
-};
+using CommandResult = test::CliResult;
 
 // Runs `cardemo render ARGS` with no display in the environment.
 CommandResult render(const std::string& args) {
-  const fs::path err = scratch("stderr.txt");
-  const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER '" +
-                          std::string(CARDEMO_BINARY) + "' render " + args + " >/dev/null 2>'" +
-                          err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  std::ifstream f(err);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
-          {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()}};
+  return test::runCardemo("render " + args, "",
+                          "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER");
 }
 
 using Surface = std::unique_ptr<SDL_Surface, decltype(&SDL_FreeSurface)>;

@@ -72,6 +72,21 @@ TEST(SdlCanvas, DrawsTextWithTheDejaVuFont) {
   EXPECT_GT(lit, 50);
 }
 
+// The font shipped in assets/fonts comes before any system one.
+TEST(FontPath, TheBundledFontComesFirst) {
+  const char* old = std::getenv("CARDEMO_ASSETS");
+  const std::string saved = old ? old : "";
+  const std::string assets = std::string(CARDEMO_SOURCE_DIR) + "/assets";
+  ::setenv("CARDEMO_ASSETS", assets.c_str(), 1);
+  EXPECT_EQ(findFontPath(),
+            std::filesystem::path(assets + "/fonts/DejaVuSans.ttf").lexically_normal().string());
+  if (old) {
+    ::setenv("CARDEMO_ASSETS", saved.c_str(), 1);
+  } else {
+    ::unsetenv("CARDEMO_ASSETS");
+  }
+}
+
 TEST(FontPath, EnvironmentOverridesAndABadOneSaysSo) {
   const char* old = std::getenv("CARDEMO_FONT");
   const std::string saved = old ? old : "";

@@ -6,8 +6,8 @@
 #include <functional>
 #include <string>
 
+#include "kernels/car_closed_form.hpp"
 #include "sim/car.hpp"
-#include "sim/car_closed_form.hpp"
 
 namespace cardemo::test {
 

@@ -17,10 +17,10 @@
 #include "geometry/angle.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/finite.hpp"
-#include "geometry/manifold2.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/obb3.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "kernels/manifold2.hpp"
 #include "stress_scale.hpp"
 
 namespace cardemo::stress {

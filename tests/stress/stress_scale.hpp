@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "../support/test_scale.hpp"
+
 namespace cardemo::stress {
 
 /// CARDEMO_STRESS_SCALE (default 1: the short form CI runs; scripts/stress.sh uses 100).
 inline double stressScale() {
-  const char* s = std::getenv("CARDEMO_STRESS_SCALE");
-  const double v = s != nullptr ? std::atof(s) : 1.0;
-  return v > 0.0 && std::isfinite(v) ? v : 1.0;
+  return testing::envScale("CARDEMO_STRESS_SCALE");
 }
 
 /// `n` scaled by stressScale(), at least 1 and at most `cap`.

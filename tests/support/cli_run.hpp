@@ -51,13 +51,15 @@ inline std::string assetPath(const std::string& relative) {
   return std::string(CARDEMO_SOURCE_DIR) + "/assets/" + relative;
 }
 
-/// Runs `cardemo ARGS` through the shell with `stdin_text` on standard input.
-inline CliResult runCardemo(const std::string& args, const std::string& stdin_text = "") {
+/// Runs `cardemo ARGS` through the shell with `stdin_text` on standard input; `env` goes before the
+/// command (e.g. "env -u DISPLAY" to run it with no display).
+inline CliResult runCardemo(const std::string& args, const std::string& stdin_text = "",
+                            const std::string& env = "") {
   const auto dir = scratchDir();
   const auto in = dir / "stdin", out = dir / "stdout", err = dir / "stderr";
   std::ofstream(in, std::ios::binary) << stdin_text;
-  const std::string command = std::string(CARDEMO_BINARY) + " " + args + " <" + in.string() + " >" +
-                              out.string() + " 2>" + err.string();
+  const std::string command = env + " '" + std::string(CARDEMO_BINARY) + "' " + args + " <" +
+                              in.string() + " >" + out.string() + " 2>" + err.string();
   const int raw = std::system(command.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
 }

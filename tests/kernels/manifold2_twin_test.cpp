@@ -9,8 +9,8 @@
 #include <array>
 #include <cmath>
 
-#include "geometry/manifold2.hpp"
-#include "random_cases2.hpp"
+#include "../geometry/random_cases2.hpp"
+#include "kernels/manifold2.hpp"
 
 namespace cardemo {
 namespace {

@@ -14,8 +14,8 @@
 
 #include <immintrin.h>
 
-#include "geometry/batch2_filter.hpp"
-#include "geometry/batch_kernels.hpp"
+#include "kernels/batch2_filter.hpp"
+#include "kernels/batch_kernels.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

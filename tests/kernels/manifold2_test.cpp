@@ -1,12 +1,12 @@
-#include "geometry/manifold2.hpp"
+#include "kernels/manifold2.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "../geometry/random_cases2.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/sat_obb2.hpp"
-#include "random_cases2.hpp"
 
 namespace cardemo {
 namespace {

@@ -28,7 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/batch_entry.hpp"
+#include "kernels/batch_entry.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <immintrin.h>
 
-#include "geometry/batch2_filter.hpp"
+#include "kernels/batch2_filter.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -7,8 +7,8 @@
 #include <span>
 #include <vector>
 
-#include "geometry/batch_entry.hpp"
 #include "geometry/obb3.hpp"
+#include "kernels/batch_entry.hpp"
 
 namespace cardemo {
 

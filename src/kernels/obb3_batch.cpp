@@ -1,4 +1,4 @@
-#include "geometry/obb3_batch.hpp"
+#include "kernels/obb3_batch.hpp"
 
 #include <algorithm>
 #include <cassert>

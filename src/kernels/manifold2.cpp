@@ -1,4 +1,4 @@
-#include "geometry/manifold2.hpp"
+#include "kernels/manifold2.hpp"
 
 #include <cassert>
 #include <cmath>

@@ -19,7 +19,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "geometry/batch_entry.hpp"
+#include "kernels/batch_entry.hpp"
 
 // Every kernel is inlined into its driver loop, so the query box's broadcast values are loaded
 // once per call rather than once per lane group (GCC and Clang both honour the attribute).

@@ -13,7 +13,7 @@
 
 #include <immintrin.h>
 
-#include "geometry/batch_kernels.hpp"
+#include "kernels/batch_kernels.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -1,7 +1,7 @@
 /// Batch 3D SAT (one box against many) against the exact oracle, the scalar collideObb3, and
 /// itself on both dispatch paths, over the seeded classes of random_cases3.hpp.
 
-#include "geometry/obb3_batch.hpp"
+#include "kernels/obb3_batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 #include <functional>
 #include <vector>
 
+#include "../geometry/random_cases3.hpp"
 #include "../support/batch_paths.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/batch_path.hpp"
-#include "random_cases3.hpp"
 
 namespace cardemo {
 namespace {

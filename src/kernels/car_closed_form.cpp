@@ -1,4 +1,4 @@
-#include "sim/car_closed_form.hpp"
+#include "kernels/car_closed_form.hpp"
 
 #include <algorithm>
 #include <cassert>

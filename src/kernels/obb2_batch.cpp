@@ -1,4 +1,4 @@
-#include "geometry/obb2_batch.hpp"
+#include "kernels/obb2_batch.hpp"
 
 #include <algorithm>
 #include <cassert>

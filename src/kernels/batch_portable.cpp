@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/batch_kernels.hpp"
+#include "kernels/batch_kernels.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

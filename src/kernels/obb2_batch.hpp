@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "geometry/aligned_allocator.hpp"
-#include "geometry/batch_entry.hpp"
 #include "geometry/obb2.hpp"
+#include "kernels/batch_entry.hpp"
 
 namespace cardemo {
 
