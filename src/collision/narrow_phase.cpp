@@ -1,5 +1,7 @@
 #include "collision/narrow_phase.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
 
 #include "geometry/sat_obb2.hpp"
@@ -31,6 +33,36 @@ SweepResult2 sweepPlayer(const Obb2& player, const Eigen::Vector2d& displacement
         }
       },
       shape);
+}
+
+namespace {
+
+// Half the width of a box's projection on a unit axis.
+double radiusAlong(const Obb2& box, const Eigen::Vector2d& axis) {
+  const Eigen::Vector2d perp = box.perp();
+  return std::abs(box.axis.x() * axis.x() + box.axis.y() * axis.y()) * box.half.x() +
+         std::abs(perp.x() * axis.x() + perp.y() * axis.y()) * box.half.y();
+}
+
+}  // namespace
+
+double separationAlong(const Obb2& player, const StaticShape& shape, const Eigen::Vector2d& axis) {
+  const double player_max =
+      player.center.x() * axis.x() + player.center.y() * axis.y() + radiusAlong(player, axis);
+  const double shape_min = std::visit(
+      [&axis](const auto& s) -> double {
+        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Obb2>) {
+          return s.center.x() * axis.x() + s.center.y() * axis.y() - radiusAlong(s, axis);
+        } else {
+          double lowest = s.vertex(0).x() * axis.x() + s.vertex(0).y() * axis.y();
+          for (int i = 1; i < s.count; ++i) {
+            lowest = std::min(lowest, s.vertex(i).x() * axis.x() + s.vertex(i).y() * axis.y());
+          }
+          return lowest;
+        }
+      },
+      shape);
+  return shape_min - player_max;
 }
 
 Aabb2 boundsOf(const StaticShape& shape) {

@@ -21,6 +21,11 @@ using StaticShape = std::variant<Obb2, ConvexPolygon>;
 [[nodiscard]] SweepResult2 sweepPlayer(const Obb2& player, const Eigen::Vector2d& displacement,
                                        const StaticShape& shape);
 
+/// Gap between the projections of the player's box and a static shape on the unit `axis` (pointing
+/// from the player towards the shape), metres: > 0 apart along it, <= 0 overlapping by -gap.
+[[nodiscard]] double separationAlong(const Obb2& player, const StaticShape& shape,
+                                     const Eigen::Vector2d& axis);
+
 /// Tight bounds of a static shape.
 [[nodiscard]] Aabb2 boundsOf(const StaticShape& shape);
 

@@ -7,8 +7,8 @@
 #include "io/text_lines.hpp"
 
 // Syntax (docs/replay.md): after the header `cardemo-replay 1`, each line is one of
-//   scene PATH | hz N | COUNT KEYS | expect health H | expect hits N | expect hit FRAME ID |
-//   expect frames N | expect hash HEX16 | expect parked FRAME | expect parked never
+//   scene PATH | hz N | COUNT KEYS (`.` or letters of U D L R H) | expect health H | expect hits N
+//   | expect hit FRAME ID | expect frames N | expect hash HEX16 | expect parked FRAME|never
 // `#` starts a comment at the start of a line or after a space or tab (so ids and paths may hold
 // '#'). Trailing spaces and a UTF-8 byte order mark before the header are tolerated (editors on
 // Windows add one).
@@ -78,18 +78,22 @@ bool parseKeys(std::string_view s, InputFrame& keys, std::string& why) {
       case 'R':
         key = &keys.right;
         break;
+      case 'H':
+        key = &keys.handbrake;
+        break;
       case 'u':
       case 'd':
       case 'l':
       case 'r':
-        why = "keys " + quoted(s) + ": use upper-case U, D, L, R";
+      case 'h':
+        why = "keys " + quoted(s) + ": use upper-case U, D, L, R, H";
         return false;
       case '.':
         why = "keys " + quoted(s) + ": \".\" means no keys and cannot be combined with letters";
         return false;
       default:
         why = "keys " + quoted(s) + ": unknown key " + quoted(std::string_view(&c, 1)) +
-              " (expected U, D, L, R or \".\")";
+              " (expected U, D, L, R, H or \".\")";
         return false;
     }
     if (*key) {
@@ -349,6 +353,7 @@ std::string keysText(const InputFrame& keys) {
   if (keys.down) s += 'D';
   if (keys.left) s += 'L';
   if (keys.right) s += 'R';
+  if (keys.handbrake) s += 'H';
   return s.empty() ? std::string(".") : s;
 }
 

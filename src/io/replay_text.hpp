@@ -58,7 +58,7 @@ inline constexpr std::size_t kMaxLineBytes = 4096;
 /// Reads and parses a replay file.
 [[nodiscard]] Parsed<Replay> loadReplay(const std::string& path);
 
-/// Formats keys as the replay writes them: `.` or letters in the order U D L R.
+/// Formats keys as the replay writes them: `.` or letters in the order U D L R H.
 [[nodiscard]] std::string keysText(const InputFrame& keys);
 
 /// The expectation lines (`expect ...`) for `expectations`, one per line, in a fixed order.

@@ -185,7 +185,8 @@ class SceneReader {
   bool readPlayer(const Node& n, PlayerStart& p) {
     const std::string path = "player";
     if (!isKind(n, Kind::kObject, path) ||
-        !onlyKeys(n, {"x", "y", "heading_deg", "length", "width", "health", "speed"}, path) ||
+        !onlyKeys(n, {"x", "y", "heading_deg", "length", "width", "health", "speed", "max_speed"},
+                  path) ||
         !readPose(n, path, p.position, p.heading_deg, p.length, p.width)) {
       return false;
     }
@@ -200,6 +201,10 @@ class SceneReader {
     }
     if (const Node* s = n.find("speed")) {
       if (!number(*s, "player.speed", Rule::kSpeed, p.speed)) return false;
+    }
+    if (const Node* s = n.find("max_speed")) {
+      if (!number(*s, "player.max_speed", Rule::kSpeed, p.max_speed)) return false;
+      if (!(p.max_speed > 0.0)) return fail(s->line, "player.max_speed: must be > 0");
     }
     return true;
   }

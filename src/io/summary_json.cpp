@@ -24,7 +24,11 @@ nlohmann::json scoreJson(const ParkingScore& score) {
 nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge) {
   nlohmann::json hits = nlohmann::json::array();
   for (const HitEvent& h : world.hits()) {
-    hits.push_back({{"frame", h.frame}, {"id", h.id}, {"speed", h.speed}, {"damage", h.damage}});
+    hits.push_back({{"frame", h.frame},
+                    {"id", h.id},
+                    {"speed", h.speed},
+                    {"damage", h.damage},
+                    {"crash", h.crash}});
   }
   const CarState& car = world.car();
   const WorldStats& s = world.stats();
@@ -41,6 +45,8 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
       {"health", world.health()},
       {"game_over", world.gameOver()},
       {"hits", hits},
+      {"crashes", world.crashes()},
+      {"scrape_damage", world.scrapeDamage()},
       {"final",
        {{"x", car.position.x()},
         {"y", car.position.y()},

@@ -9,6 +9,8 @@
 namespace cardemo {
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 // Moves `value` toward `target` by at most `max_delta`, landing exactly on the target.
 double approach(double value, double target, double max_delta) {
   if (value < target) return std::min(value + max_delta, target);
@@ -19,15 +21,21 @@ double approach(double value, double target, double max_delta) {
 // Speed after the driver's command (throttle, brake, reverse) over one step.
 double commandedSpeed(double v, const InputFrame& in, const CarParams& p, double dt) {
   const double brake = p.brake_decel * dt;
+  if (in.handbrake) return approach(v, 0.0, p.handbrake_decel * dt);
   if (in.up && in.down) return approach(v, 0.0, brake);
-  if (in.up) return v < 0.0 ? approach(v, 0.0, brake) : v + p.engine_accel * dt;
+  if (in.up) {
+    if (v < 0.0) return approach(v, 0.0, brake);
+    // At or beyond the speed cap (possibly from the scene's initial speed): the engine stops.
+    if (v >= p.max_speed) return v;
+    return std::min(v + p.engine_accel * dt, p.max_speed);
+  }
   if (in.down) {
     if (v > 0.0) return approach(v, 0.0, brake);
     // Already beyond the reverse limit (an initial speed from the scene): leave it to drag.
     if (v <= -p.max_reverse_speed) return v;
     return std::max(v - p.reverse_accel * dt, -p.max_reverse_speed);
   }
-  return v;
+  return approach(v, 0.0, p.engine_brake * dt);
 }
 
 // Speed after drag (a = -drag v |v|) and rolling resistance; resistance stops the car, it never
@@ -69,26 +77,90 @@ double steeringLock(const CarParams& params, double speed) {
   return params.max_steer / (1.0 + r * r);
 }
 
+double gripLock(const CarParams& params, double speed) {
+  // Steady turning on the bicycle model: lateral acceleration v^2 tan(delta) / L (Rajamani,
+  // "Vehicle Dynamics and Control", 2nd ed., sec. 2.2); capping it at the grip gives the lock.
+  const double v2 = speed * speed;
+  if (!(v2 > 0.0)) return 0.5 * kPi;
+  return std::atan(params.grip * params.wheelbase / v2);
+}
+
+double effectiveLock(const CarParams& params, double speed, bool handbrake) {
+  const double lock = steeringLock(params, speed);
+  return handbrake ? lock : std::min(lock, gripLock(params, speed));
+}
+
+CarState slideCar(CarState next, const CarState& steered, bool handbrake, const CarParams& params,
+                  double dt) {
+  double grip = params.grip;
+  if (handbrake) {
+    grip *= params.handbrake_grip;
+    // The rear tyres slide: the body turns by the integrator's yaw but the velocity keeps its
+    // direction, so the turn shows up, seen from the body, as slip; only the slip's decay below
+    // (at the rear's reduced grip) then pulls the velocity round.
+    const double turn = wrapRadians(next.heading - steered.heading);
+    if (turn != 0.0) {
+      const double c = std::cos(turn), s = std::sin(turn);
+      const double forward = next.speed * c + next.slip * s;
+      next.slip = next.slip * c - next.speed * s;
+      next.speed = forward;
+    }
+  }
+  if (next.slip == 0.0) return next;
+  const double lateral = next.slip * dt;
+  next.position.x() -= next.direction.y() * lateral;
+  next.position.y() += next.direction.x() * lateral;
+  double slip = approach(next.slip, 0.0, grip * dt);
+  // Against a surface the tyres cannot pull the car into what holds it: a decay that would turn
+  // the velocity into the surface goes at most as far as the slip whose velocity runs along it, and
+  // not at all once the velocity already points into it. Otherwise a car pushed along a wall at an
+  // angle sticks (each frame's decay is taken back by the response, less friction), and one
+  // braking along it drifts off and re-touches it.
+  const Eigen::Vector2d& n = next.surface_normal;
+  const double lateral_n = next.direction.x() * n.y() - next.direction.y() * n.x();
+  const double change = slip - next.slip;
+  if (change * lateral_n > 0.0) {
+    const double forward_n = next.direction.x() * n.x() + next.direction.y() * n.y();
+    const double along = -next.speed * forward_n / lateral_n;
+    const double to_along = along - next.slip;
+    if (!(to_along * change > 0.0)) {
+      slip = next.slip;
+    } else if (std::abs(to_along) < std::abs(change)) {
+      slip = along;
+    }
+  }
+  next.slip = slip;
+  return next;
+}
+
 CarState integrateCar(const CarState& state, const InputFrame& input, const CarParams& params,
                       double dt) {
   CarState steered = state;
-  const double lock = steeringLock(params, state.speed);
+  const double lock = effectiveLock(params, state.speed, input.handbrake);
   double target = 0.0;
   if (input.left && !input.right) target = lock;
   if (input.right && !input.left) target = -lock;
   steered.steer = approach(state.steer, target, params.steer_rate * dt);
 
+  CarState next;
   switch (params.integrator) {
     case CarIntegrator::kExplicitEuler:
-      return stepExplicitEuler(steered, speedLawFor(state.speed, input, params), params, dt);
+      next = stepExplicitEuler(steered, speedLawFor(state.speed, input, params), params, dt);
+      break;
     case CarIntegrator::kRk4:
-      return stepRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+      next = stepRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+      break;
     case CarIntegrator::kArcRk4:
-      return stepArcRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+      next = stepArcRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+      break;
     case CarIntegrator::kSemiImplicitEuler:
+      next = stepSemiImplicitEuler(steered, input, params, dt);
       break;
   }
-  return stepSemiImplicitEuler(steered, input, params, dt);
+  // Lie splitting (Hairer, Lubich and Wanner, "Geometric Numerical Integration", 2nd ed., sec.
+  // II.5): the longitudinal schemes above keep their closed forms; the slip is one shared step.
+  if (next.slip == 0.0 && !input.handbrake) return next;
+  return slideCar(next, steered, input.handbrake, params, dt);
 }
 
 Obb2 carBox(const CarState& state, const CarParams& params) {

@@ -2,6 +2,7 @@
 /// Car parameters, state, and the fixed-step kinematic bicycle model.
 
 #include <Eigen/Core>
+#include <limits>
 
 #include "geometry/obb2.hpp"
 #include "sim/input_frame.hpp"
@@ -34,6 +35,16 @@ struct CarParams {
   double lock_speed = 20.0;       ///< Speed (m/s) at which the lock has narrowed to half.
   double restitution = 0.2;       ///< Share of the normal speed that bounces back after an impact.
   double bounce_threshold = 1.0;  ///< Impacts slower than this (m/s) do not bounce at all.
+  double skid_slip = 0.5;  ///< Lateral slip (m/s) above which the tyres count as sliding (skids).
+  double grip = 9.0;  ///< Lateral acceleration the tyres can give (about 0.92 g), m/s^2: caps the
+                      ///< lock at speed (v^2 tan(lock) / wheelbase <= grip) and decays the slip.
+  double engine_brake = 1.5;     ///< Deceleration with no pedal held (engine braking), m/s^2.
+  double handbrake_decel = 6.0;  ///< Deceleration under the handbrake, m/s^2.
+  double handbrake_grip = 0.3;   ///< Share of `grip` left under the handbrake (locked rear wheels).
+  double max_speed = std::numeric_limits<double>::infinity();  ///< The engine stops pushing at
+                                                               ///< this forward speed, m/s.
+  double contact_friction = 0.3;  ///< Coulomb coefficient of car against walls and colliders: the
+                                  ///< tangential speed change is at most this times the normal one.
   CarIntegrator integrator =
       CarIntegrator::kArcRk4;  ///< Scheme of integrateCar (docs/performance.md).
 };
@@ -45,21 +56,48 @@ struct CarState {
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  ///< (cos, sin) of heading, kept in sync.
   double speed = 0.0;  ///< Signed speed along the heading, m/s (negative when reversing).
   double steer = 0.0;  ///< Front-wheel angle, radians, positive to the left.
+  double slip = 0.0;   ///< Lateral (side-slip) speed across the heading, m/s, positive to the left.
+  Eigen::Vector2d surface_normal = Eigen::Vector2d::Zero();  ///< Unit normal, from the car, of the
+                                                             ///< wall or collider it rests against
+                                                             ///< after the last step; 0 when free.
 
-  /// Velocity vector in the world frame, m/s.
-  [[nodiscard]] Eigen::Vector2d velocity() const { return direction * speed; }
+  /// Velocity vector in the world frame (forward speed plus lateral slip), m/s.
+  [[nodiscard]] Eigen::Vector2d velocity() const {
+    return {direction.x() * speed - direction.y() * slip,
+            direction.y() * speed + direction.x() * slip};
+  }
 };
 
-/// Steering lock at a given speed: the lock narrows as speed grows.
+/// Steering lock at a given speed: the lock narrows as speed grows (steering geometry only).
 [[nodiscard]] double steeringLock(const CarParams& params, double speed);
 
+/// The largest wheel angle whose bicycle-model turn stays within the tyres' grip at `speed`:
+/// atan(grip * wheelbase / speed^2) (pi/2 at rest).
+[[nodiscard]] double gripLock(const CarParams& params, double speed);
+
+/// The lock the wheel is steered to: the steering lock, capped by the grip lock unless the
+/// handbrake is held (the rear then slides instead).
+[[nodiscard]] double effectiveLock(const CarParams& params, double speed, bool handbrake);
+
 /// Advances the car by one fixed step `dt` (seconds) under `input`: the steering angle moves first
-/// (rate limited) and is then held over the step; throttle/brake/reverse, drag and rolling
-/// resistance drive the speed, the bicycle model the heading, and the position moves along the
-/// heading, integrated by `params.integrator`. No scheme lets resistance or braking reverse the car
-/// within a step, and none lets the reverse command pass `max_reverse_speed`.
+/// (rate limited, towards effectiveLock) and is then held over the step; throttle/brake/reverse,
+/// engine braking, handbrake, drag and rolling resistance drive the speed, the bicycle model the
+/// heading, and the position moves along the heading, integrated by `params.integrator`. No scheme
+/// lets resistance or braking reverse the car within a step, and none lets the engine pass
+/// `max_speed` or the reverse command pass `max_reverse_speed`. Then one split step shared by every
+/// scheme (slideCar) handles the lateral slip.
 [[nodiscard]] CarState integrateCar(const CarState& state, const InputFrame& input,
                                     const CarParams& params, double dt);
+
+/// The lateral split step after the integrator (`steered` is the state before it): under the
+/// handbrake the body turns by the integrator's yaw while the velocity keeps its direction (the
+/// turn becomes slip); the position moves by the slip over dt; the slip then decays towards 0 at
+/// the grip rate (handbrake_grip * grip under the handbrake), except that against a surface
+/// (`surface_normal`) a decay that turns the velocity into it stops where the velocity runs along
+/// it, or does not start when it already points into it. A state without slip and without the
+/// handbrake is returned unchanged.
+[[nodiscard]] CarState slideCar(CarState next, const CarState& steered, bool handbrake,
+                                const CarParams& params, double dt);
 
 /// The car's oriented box at a state.
 [[nodiscard]] Obb2 carBox(const CarState& state, const CarParams& params);

@@ -30,7 +30,7 @@ void setHeading(CarState& next, const CarState& start, double unwrapped) {
 
 double SpeedLaw::rate(double v) const {
   if (travel == 0.0) return 0.0;
-  const double push = reversing && v <= reverse_limit ? 0.0 : command;
+  const double push = limited && travel * v >= travel * limit ? 0.0 : command;
   const double a = push - drag * v * std::abs(v) - rolling * travel;
   // Stopped (or at rest and about to move): nothing here can push the car against its travel.
   if (travel * v <= 0.0 && travel * a <= 0.0) return 0.0;
@@ -45,7 +45,8 @@ double SpeedLaw::alongTravel(double v) const {
 
 double SpeedLaw::endSpeed(double v) const {
   const double along = alongTravel(v);
-  return capped ? std::max(along, reverse_limit) : along;
+  if (!capped) return along;
+  return travel > 0.0 ? std::min(along, limit) : std::max(along, limit);
 }
 
 SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params) {
@@ -55,26 +56,34 @@ SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& par
   law.travel = speed > 0.0 ? 1.0 : (speed < 0.0 ? -1.0 : 0.0);
   const double brake = -law.travel * params.brake_decel;  // toward zero
   // The same modes as the semi-implicit update (car.cpp, commandedSpeed).
-  if (input.up && input.down) {
+  if (input.handbrake) {
+    law.command = -law.travel * params.handbrake_decel;
+  } else if (input.up && input.down) {
     law.command = brake;
   } else if (input.up) {
     if (speed < 0.0) {
       law.command = brake;
-    } else {
+    } else if (speed < params.max_speed) {
       law.command = params.engine_accel;
       law.travel = 1.0;
+      law.limited = true;
+      law.capped = true;
+      law.limit = params.max_speed;
     }
+    // At or beyond the speed cap (possibly the scene's initial speed): the engine stops.
   } else if (input.down) {
     if (speed > 0.0) {
       law.command = brake;
     } else if (speed > -params.max_reverse_speed) {
       law.command = -params.reverse_accel;
       law.travel = -1.0;
-      law.reversing = true;
+      law.limited = true;
       law.capped = true;
-      law.reverse_limit = -params.max_reverse_speed;
+      law.limit = -params.max_reverse_speed;
     }
     // Already beyond the reverse limit (an initial speed from the scene): leave it to drag.
+  } else {
+    law.command = -law.travel * params.engine_brake;
   }
   return law;
 }

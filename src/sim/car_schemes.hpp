@@ -8,17 +8,19 @@
 namespace cardemo {
 
 /// The speed ODE of one step with the inputs held: v' = command - drag v|v| - rolling * travel.
-/// The mode (throttle, brake, reverse, coast) is chosen once from the speed at the start of the
-/// step, as the semi-implicit update does; within the step the car stops at zero instead of
-/// reversing, and the reverse command switches off at -max_reverse_speed.
+/// The mode (handbrake, throttle, brake, reverse, coast under engine braking) is chosen once from
+/// the speed at the start of the step, as the semi-implicit update does; within the step the car
+/// stops at zero instead of reversing, and the engine (forward, or the reverse command) switches
+/// off at its limit (max_speed, or -max_reverse_speed).
 struct SpeedLaw {
-  double command = 0.0;  ///< Driver's acceleration (throttle, brake or reverse), m/s^2, signed.
+  double command = 0.0;  ///< Driver's acceleration (throttle, brake, reverse, engine braking),
+                         ///< m/s^2, signed.
   double travel = 0.0;   ///< Direction of travel over the step: +1, -1, or 0 (at rest and stays).
   double drag = 0.0;     ///< Drag coefficient, 1/m.
   double rolling = 0.0;  ///< Rolling resistance, m/s^2.
-  double reverse_limit = 0.0;  ///< Speed (m/s, <= 0) below which the reverse command is off.
-  bool reversing = false;      ///< True when `command` is the reverse command.
-  bool capped = false;         ///< True when the step's end speed is clamped to reverse_limit.
+  double limit = 0.0;    ///< Speed (m/s, signed like `travel`) beyond which the command is off.
+  bool limited = false;  ///< True when `command` is the engine's, which switches off at `limit`.
+  bool capped = false;   ///< True when the step's end speed is clamped to `limit`.
 
   /// Acceleration at speed `v` (m/s^2); zero once the car has stopped against its travel.
   [[nodiscard]] double rate(double v) const;

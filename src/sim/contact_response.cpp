@@ -7,17 +7,18 @@
 namespace cardemo {
 
 double closingSpeed(const CarState& car, const Eigen::Vector2d& normal) {
-  const double vx = car.speed * car.direction.x();
-  const double vy = car.speed * car.direction.y();
-  const double vn = vx * normal.x() + vy * normal.y();
+  const Eigen::Vector2d v = car.velocity();
+  const double vn = v.x() * normal.x() + v.y() * normal.y();
   return vn > 0.0 ? vn : 0.0;
 }
 
 namespace {
 
 // World velocity (vx, vy) with its closing part along `normal` taken away; fast impacts bounce back
-// `restitution` of it. A normal along a world axis changes only that axis's component. Returns
-// whether anything was taken away.
+// `restitution` of it. The tangential part loses at most `contact_friction` times the normal change
+// (Coulomb's law on impulses, as in Box2D's contact solver: Catto, "Iterative Dynamics with
+// Temporal Coherence", GDC 2005), never more than all of it. A normal along a world axis changes
+// the other component only by friction. Returns whether anything was taken away.
 bool removeClosingPart(double& vx, double& vy, const Eigen::Vector2d& normal,
                        const CarParams& params) {
   const double vn = vx * normal.x() + vy * normal.y();
@@ -26,28 +27,40 @@ bool removeClosingPart(double& vx, double& vy, const Eigen::Vector2d& normal,
   // wall by its throttle would bounce off and come back in ever smaller hops, each a new hit.
   const double restitution = vn > params.bounce_threshold ? params.restitution : 0.0;
   const double k = (1.0 + restitution) * vn;
-  vx -= k * normal.x();
-  vy -= k * normal.y();
+  const double tx = vx - vn * normal.x();
+  const double ty = vy - vn * normal.y();
+  const double tangential = std::sqrt(tx * tx + ty * ty);
+  const double friction = params.contact_friction * k;
+  // Share of the tangential velocity kept: 0 when friction stops the sliding outright.
+  const double kept = tangential > friction ? (tangential - friction) / tangential : 0.0;
+  vx = tx * kept - restitution * vn * normal.x();
+  vy = ty * kept - restitution * vn * normal.y();
   return true;
 }
 
-// Back onto the heading (the bicycle model has no side slip). When the response cancels the motion
-// along the heading exactly, the projection leaves a few ulps of |v| with an arbitrary sign; the
-// car model branches on the sign of the speed, so that residue is made an exact zero (otherwise a
-// mirrored or rotated scene, whose residue has the other sign, would brake where the original
+// Back into the car's frame: forward speed along the heading and lateral slip across it. When the
+// response cancels a component exactly, rounding leaves a few ulps of |v| with an arbitrary sign;
+// the car model branches on the sign of the speed, so that residue is made an exact zero (otherwise
+// a mirrored or rotated scene, whose residue has the other sign, would brake where the original
 // accelerates).
-void setSpeedFromVelocity(CarState& car, double vx, double vy, double speed_before) {
+void setVelocity(CarState& car, double vx, double vy, double size_before) {
   const double speed = vx * car.direction.x() + vy * car.direction.y();
-  const double residue = 8.0 * std::numeric_limits<double>::epsilon() * std::abs(speed_before);
+  const double slip = vy * car.direction.x() - vx * car.direction.y();
+  const double residue = 8.0 * std::numeric_limits<double>::epsilon() * size_before;
   car.speed = std::abs(speed) <= residue ? 0.0 : speed;
+  car.slip = std::abs(slip) <= residue ? 0.0 : slip;
+}
+
+double sizeOf(const CarState& car) {
+  return std::abs(car.speed) + std::abs(car.slip);
 }
 
 }  // namespace
 
 void removeClosingVelocity(CarState& car, const Eigen::Vector2d& normal, const CarParams& params) {
-  double vx = car.speed * car.direction.x();
-  double vy = car.speed * car.direction.y();
-  if (removeClosingPart(vx, vy, normal, params)) setSpeedFromVelocity(car, vx, vy, car.speed);
+  const Eigen::Vector2d v = car.velocity();
+  double vx = v.x(), vy = v.y();
+  if (removeClosingPart(vx, vy, normal, params)) setVelocity(car, vx, vy, sizeOf(car));
 }
 
 double restingPenetration(const Eigen::Vector2d& position) {
@@ -70,14 +83,15 @@ double pushOutSlack(const Eigen::Vector2d& position) {
   return std::max(1e-10, 8e-16 * scale);
 }
 
-bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls) {
+bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls,
+                     Eigen::Vector2d& normal) {
   const Aabb2 box = carBox(car, params).aabb();
   double dx = 0.0, dy = 0.0;
-  // Both walls act on the same world velocity, each on its own component, and the result goes back
-  // onto the heading once: so a corner gives the same answer whichever wall is "x" (a quarter turn
-  // of the scene swaps them).
-  double vx = car.speed * car.direction.x();
-  double vy = car.speed * car.direction.y();
+  // Both walls act on the same world velocity, and the result goes back into the car's frame once:
+  // a corner gives the same answer whichever wall is "x" up to the order of the two friction
+  // losses (a quarter turn of the scene swaps them).
+  const Eigen::Vector2d v = car.velocity();
+  double vx = v.x(), vy = v.y();
   bool slowed = false;
   if (box.min.x() < walls.min.x()) {
     dx = walls.min.x() - box.min.x();
@@ -93,8 +107,14 @@ bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls)
     dy = walls.max.y() - box.max.y();
     slowed = removeClosingPart(vx, vy, Eigen::Vector2d(0.0, 1.0), params) || slowed;
   }
-  if (slowed) setSpeedFromVelocity(car, vx, vy, car.speed);
+  if (slowed) setVelocity(car, vx, vy, sizeOf(car));
   if (dx == 0.0 && dy == 0.0) return false;
+  // Pushed by +dx off the wall at -x: that wall's normal (from the car) is -x.
+  if (std::abs(dx) >= std::abs(dy)) {
+    normal = Eigen::Vector2d(dx > 0.0 ? -1.0 : 1.0, 0.0);
+  } else {
+    normal = Eigen::Vector2d(0.0, dy > 0.0 ? -1.0 : 1.0);
+  }
   car.position.x() += dx;
   car.position.y() += dy;
   return true;

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,12 +29,13 @@ struct Obstacle {
 
 /// The player's starting pose and body.
 struct PlayerStart {
-  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< Centre, world metres.
-  double heading_deg = 0.0;                            ///< Degrees CCW from +x.
-  double length = 4.5;                                 ///< Metres along the heading.
-  double width = 1.8;                                  ///< Metres across.
-  int health = 100;                                    ///< Starting health (> 0).
-  double speed = 0.0;                                  ///< Initial forward speed, m/s.
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();          ///< Centre, world metres.
+  double heading_deg = 0.0;                                    ///< Degrees CCW from +x.
+  double length = 4.5;                                         ///< Metres along the heading.
+  double width = 1.8;                                          ///< Metres across.
+  int health = 100;                                            ///< Starting health (> 0).
+  double speed = 0.0;                                          ///< Initial forward speed, m/s.
+  double max_speed = std::numeric_limits<double>::infinity();  ///< Engine's speed cap, m/s.
 };
 
 /// A parking bay: the rectangle the player must park in.

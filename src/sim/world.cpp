@@ -35,6 +35,7 @@ CarParams paramsFor(const WorldSettings& settings, const PlayerStart& player) {
   CarParams p = settings.car;
   p.length = player.length;
   p.width = player.width;
+  p.max_speed = std::min(p.max_speed, player.max_speed);
   return p;
 }
 
@@ -59,7 +60,11 @@ World::World(Scene scene, const WorldSettings& settings)
       collider_bounds_(boundsOfAll(colliders_)),
       grid_(collider_bounds_),
       health_(scene_.player.health),
-      touching_(colliders_.size(), 0) {
+      touching_(colliders_.size(), 0),
+      crash_until_(colliders_.size(), -1),
+      crash_charged_(colliders_.size(), 0),
+      crash_of_(colliders_.size(), 0) {
+  crash_window_frames_ = std::llround(settings_.crash_window * settings_.hz);
   car_.position = scene_.player.position;
   car_.heading = wrapRadians(scene_.player.heading_deg * (kPi / 180.0));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
@@ -81,6 +86,7 @@ World::World(Scene scene, const WorldSettings& settings)
   detect();
   mergeDetected();
   recordHits();
+  car_.surface_normal = surfaceNormal();
 }
 
 const std::string& World::colliderId(std::uint32_t i) const {
@@ -122,11 +128,32 @@ void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
   detected_bounds_ = bounds;
   for (const std::uint32_t id : candidates_) {
     ++stats_.narrowphase_tests;
-    const SatResult2 r = collidePlayer(box, colliders_[id]);
-    if (r.separation <= 0.0) detected_.push_back({id, r.normal, r.separation});
+    SatResult2 r = collidePlayer(box, colliders_[id]);
+    if (r.separation <= 0.0) {
+      if (touching_[id] == 0 && !previous_contacts_.empty()) smoothSeam(box, id, r);
+      detected_.push_back({id, r.normal, r.separation});
+    }
   }
   detected_box_ = box;
   have_detected_ = true;
+}
+
+void World::smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const {
+  // Sliding along a row of touching or close colliders, the car's leading corner meets the next
+  // one's corner; SAT then picks the tiny overlap along the row as the normal and the car stops
+  // dead on the seam. When the new collider overlaps only a little along the normal of a collider
+  // touched at the last frame, that surface continues across the seam, so its normal is used (the
+  // idea of Box2D's ghost vertices on chain shapes: Catto, "Ghost Vertices", box2d.org, 2020).
+  for (const ActiveContact& support : previous_contacts_) {
+    if (support.collider == id) continue;
+    const double along = separationAlong(box, colliders_[id], support.normal);
+    // SAT's separation is the largest over every axis, so `along` is at most r.separation.
+    if (-along <= settings_.seam_depth) {
+      r.normal = support.normal;
+      r.separation = along;
+      return;
+    }
+  }
 }
 
 void World::mergeDetected() {
@@ -151,7 +178,7 @@ void World::mergeDetected() {
 void World::moveWithSubsteps(const CarState& start, const CarState& next) {
   const double dt = 1.0 / settings_.hz;
   const double limit = 0.5 * std::min(params_.length, params_.width);
-  const double motion = std::abs(next.speed) * dt;
+  const double motion = std::sqrt(next.speed * next.speed + next.slip * next.slip) * dt;
   std::int64_t n = 1;
   // Continuous safety: no sub-step moves the car by more than half its smaller extent, so it
   // cannot pass through anything (the 2^20 cap only guards against absurd inputs).
@@ -232,7 +259,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
 
 void World::moveContinuous(const CarState& start, const CarState& next) {
   const double limit = half_min_extent_;
-  const double travel = std::abs(next.speed) / settings_.hz;
+  const double travel = std::sqrt(next.speed * next.speed + next.slip * next.slip) / settings_.hz;
   // The turn within the step (both headings are wrapped, so the raw difference is within 2 pi).
   double turn = std::abs(next.heading - start.heading);
   if (turn > kPi) turn = 2.0 * kPi - turn;
@@ -330,11 +357,57 @@ void World::resolveContacts() {
   }
   // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
   // keepInsideWalls would not move the car, so it is not called.
-  if (scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
-      keepInsideWalls(car_, params_, *scene_.bounds)) {
+  wall_contact_ = scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
+                  keepInsideWalls(car_, params_, *scene_.bounds, wall_normal_);
+  if (wall_contact_) {
     detect();
     mergeDetected();
   }
+}
+
+int World::impactDamage(double speed) const {
+  if (!(speed >= settings_.damage_threshold)) return 0;
+  // Rounded up, but an excess within rounding of an integer is not a point more: a car at its
+  // exact 8 m/s reverse limit hitting a rotated copy of a car reads 8.0000000000000018 m/s.
+  const double raw = std::ceil(settings_.damage_per_mps * speed - kDamageRounding);
+  const double clamped = std::clamp(raw, static_cast<double>(settings_.damage_min),
+                                    static_cast<double>(settings_.damage_max));
+  return static_cast<int>(clamped);
+}
+
+void World::chargeScrape() {
+  // Damage by time, counted in whole frames so that it is exact: floor(frames * rate / hz) in all.
+  const Eigen::Vector2d v = car_.velocity();
+  bool scraping = false;
+  for (const ActiveContact& c : contacts_) {
+    const double vn = v.x() * c.normal.x() + v.y() * c.normal.y();
+    const double tx = v.x() - vn * c.normal.x();
+    const double ty = v.y() - vn * c.normal.y();
+    if (tx * tx + ty * ty > settings_.scrape_threshold * settings_.scrape_threshold) {
+      scraping = true;
+      break;
+    }
+  }
+  if (!scraping) return;
+  ++scrape_frames_;
+  const int due =
+      static_cast<int>(std::min(std::floor(static_cast<double>(scrape_frames_) *
+                                           settings_.scrape_damage_per_s / settings_.hz),
+                                1e9));
+  health_ = std::max(0, health_ - (due - scrape_damage_));
+  scrape_damage_ = due;
+}
+
+Eigen::Vector2d World::surfaceNormal() const {
+  // The deepest contact's surface (the one push-out resolved first), else the wall met.
+  if (!contacts_.empty()) {
+    const ActiveContact* deepest = &contacts_.front();
+    for (const ActiveContact& c : contacts_) {
+      if (c.separation < deepest->separation) deepest = &c;
+    }
+    return deepest->normal;
+  }
+  return wall_contact_ ? wall_normal_ : Eigen::Vector2d::Zero();
 }
 
 void World::recordHits() {
@@ -349,17 +422,26 @@ void World::recordHits() {
   }
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const std::uint32_t id = contacts_[k].collider;
-    if (touching_[id] != 0) continue;
-    const double speed = contact_speed_[k];
-    // Rounded up, but an excess within rounding of an integer is not a point more: a car at its
-    // exact 8 m/s reverse limit hitting a rotated copy of a car reads 8.0000000000000018 m/s.
-    const double raw = std::ceil(settings_.damage_per_mps * speed - kDamageRounding);
-    const double clamped = std::clamp(raw, static_cast<double>(settings_.damage_min),
-                                      static_cast<double>(settings_.damage_max));
-    const int damage = static_cast<int>(clamped);
-    health_ = std::max(0, health_ - damage);
-    hits_.push_back({frame_, id, colliderId(id), speed, damage, contact_fraction_});
+    if (touching_[id] == 0) {
+      // A hit: the first frame of contact. Within the crash window of this collider it is the same
+      // crash, which costs only what this impact is worth beyond what the crash already took.
+      const double speed = contact_speed_[k];
+      const int worth = impactDamage(speed);
+      int damage = worth;
+      if (frame_ <= crash_until_[id]) {
+        damage = std::max(0, worth - crash_charged_[id]);
+        crash_charged_[id] += damage;
+      } else {
+        crash_of_[id] = ++crash_count_;
+        crash_charged_[id] = worth;
+      }
+      health_ = std::max(0, health_ - damage);
+      hits_.push_back(
+          {frame_, id, colliderId(id), speed, damage, crash_of_[id], contact_fraction_});
+    }
+    crash_until_[id] = frame_ + crash_window_frames_;
   }
+  chargeScrape();
   for (const ActiveContact& c : previous_contacts_) touching_[c.collider] = 0;
   for (const ActiveContact& c : contacts_) touching_[c.collider] = 1;
   stats_.contacts += static_cast<std::int64_t>(contacts_.size());
@@ -368,6 +450,9 @@ void World::recordHits() {
 void World::step(const InputFrame& input) {
   const InputFrame in = gameOver() ? InputFrame{} : input;
   const CarState start = car_;
+  last_input_ = in;
+  braking_ = start.speed != 0.0 && (in.handbrake || (in.up && in.down) ||
+                                    (in.down && start.speed > 0.0) || (in.up && start.speed < 0.0));
   const CarState next = integrateCar(start, in, params_, 1.0 / settings_.hz);
   ++frame_;
   previous_contacts_.swap(contacts_);
@@ -389,6 +474,16 @@ void World::step(const InputFrame& input) {
   mergeDetected();
   resolveContacts();
   recordHits();
+  car_.surface_normal = surfaceNormal();
+  // Turning at the grip limit: the driver asks for more lock than the tyres can use.
+  bool grip_limited = false;
+  if (in.left != in.right && !in.handbrake) {
+    const double grip_lock = gripLock(params_, start.speed);
+    grip_limited =
+        grip_lock < steeringLock(params_, start.speed) && std::abs(next.steer) >= grip_lock;
+  }
+  sliding_ = grip_limited || std::abs(car_.slip) > params_.skid_slip ||
+             (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
 }
 
 }  // namespace cardemo

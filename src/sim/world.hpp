@@ -31,11 +31,19 @@ struct WorldSettings {
   double hz = 120.0;  ///< Fixed steps per second.
   CarParams car;      ///< Car tuning (length/width come from the scene).
   BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;  ///< Player box used for queries.
-  int damage_min = 5;                                     ///< Damage of the gentlest hit.
-  int damage_max = 50;                                    ///< Damage of the hardest hit.
+  int damage_min = 3;   ///< Damage of the gentlest hit that does damage at all.
+  int damage_max = 50;  ///< Damage of the hardest hit.
   double damage_per_mps =
       3.0;  ///< Damage per m/s of normal impact speed (rounded up, ignoring an excess below 1e-9).
-  int max_push_iterations = 4;  ///< Contact resolution passes per step.
+  double damage_threshold = 1.0;  ///< Hits closing slower than this (m/s) do no damage.
+  double crash_window = 1.5;      ///< A re-touch of the same collider within this many seconds of
+                                  ///< the last contact with it is the same crash, s.
+  double scrape_threshold = 1.0;  ///< Sliding along a collider faster than this (m/s) scrapes.
+  double scrape_damage_per_s = 4.0;  ///< Damage per second of scraping (whole points, exact).
+  int max_push_iterations = 4;       ///< Contact resolution passes per step.
+  double seam_depth = 0.05;  ///< A new contact that overlaps by at most this much (m) along the
+                             ///< normal of a collider touched at the last frame takes that normal:
+                             ///< the seam between two neighbours is not a wall.
   CollisionDetection collision = CollisionDetection::kContinuous;  ///< Fast-motion scheme.
 };
 
@@ -45,7 +53,10 @@ struct HitEvent {
   std::uint32_t collider = 0;  ///< Index: parked cars first, then obstacles.
   std::string id;              ///< The collider's id.
   double speed = 0.0;          ///< Closing speed along the contact normal at impact, m/s.
-  int damage = 0;              ///< Health taken.
+  int damage = 0;              ///< Health taken: 0 below the threshold or when the crash it
+                               ///< belongs to already charged as much.
+  std::int64_t crash = 0;      ///< The crash (1, 2, ...) this hit belongs to: re-touches of the
+                               ///< same collider within the crash window share one.
   double step_fraction = 1.0;  ///< Where in the step the contact was found: 1 = at the end pose;
                                ///< less for a sub-step or a swept time of impact.
 };
@@ -88,10 +99,26 @@ class World {
   [[nodiscard]] const CarState& car() const { return car_; }
   /// The player's box.
   [[nodiscard]] Obb2 carBox() const;
+  /// The input applied at the last step (all keys up once the game is over, or before any step).
+  [[nodiscard]] const InputFrame& lastInput() const { return last_input_; }
+  /// The car's lateral slip speed, m/s, positive to the left of its heading.
+  [[nodiscard]] double slipSpeed() const { return car_.slip; }
+  /// True when the tyres slide (skid marks, screech): lateral slip above `CarParams::skid_slip`,
+  /// turning at the grip limit, or the handbrake locking moving wheels.
+  [[nodiscard]] bool sliding() const { return sliding_; }
+  /// True when the last step's input slowed a moving car (brake, throttle against a reverse roll,
+  /// both pedals, or the handbrake): the brake lights.
+  [[nodiscard]] bool braking() const { return braking_; }
+  /// True when the car moves backwards: the reversing lights.
+  [[nodiscard]] bool reversing() const { return car_.speed < 0.0; }
   /// Current health, never below 0.
   [[nodiscard]] int health() const { return health_; }
   /// True once health has reached 0 (input is ignored from then on).
   [[nodiscard]] bool gameOver() const { return health_ <= 0; }
+  /// Health taken by scraping so far.
+  [[nodiscard]] int scrapeDamage() const { return scrape_damage_; }
+  /// Crashes so far (a crash is one or more hits of one collider, see HitEvent::crash).
+  [[nodiscard]] std::int64_t crashes() const { return crash_count_; }
   /// Every hit so far, in order.
   [[nodiscard]] const std::vector<HitEvent>& hits() const { return hits_; }
   /// Contacts at the current frame.
@@ -121,10 +148,24 @@ class World {
   CarState car_;
   int health_ = 100;
   std::int64_t frame_ = 0;
+  InputFrame last_input_;
+  bool sliding_ = false;
+  bool braking_ = false;
+  bool wall_contact_ = false;  // keepInsideWalls moved the car this step
+  Eigen::Vector2d wall_normal_ = Eigen::Vector2d::Zero();  // the wall it met then
   std::vector<HitEvent> hits_;
   std::vector<ActiveContact> contacts_;
   std::vector<std::uint32_t> candidates_;
   std::vector<std::uint8_t> touching_;  // per collider: in contact at the previous frame
+  // Per collider: the last frame of its crash window (-1: none), the damage that crash has charged
+  // so far, and its crash number.
+  std::vector<std::int64_t> crash_until_;
+  std::vector<int> crash_charged_;
+  std::vector<std::int64_t> crash_of_;
+  std::int64_t crash_count_ = 0;
+  std::int64_t crash_window_frames_ = 0;
+  std::int64_t scrape_frames_ = 0;  // frames spent scraping so far
+  int scrape_damage_ = 0;           // damage charged for them
   Aabb2 last_query_box_;
   bool have_query_ = false;
   WorldStats stats_;
@@ -143,6 +184,7 @@ class World {
 
   void detect();
   void narrowPhase(const Obb2& box, const Aabb2& bounds);
+  void smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const;
   void detectWithinSweep(const Obb2& box);
   void mergeDetected();
   void moveWithSubsteps(const CarState& start, const CarState& next);
@@ -151,6 +193,9 @@ class World {
                                            const Eigen::Vector2d& displacement);
   void resolveContacts();
   void recordHits();
+  [[nodiscard]] int impactDamage(double speed) const;
+  void chargeScrape();
+  [[nodiscard]] Eigen::Vector2d surfaceNormal() const;
 };
 
 /// Formats a hash as 16 lowercase hex digits.

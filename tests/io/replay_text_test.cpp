@@ -132,6 +132,18 @@ TEST(ReplayText, KeysText) {
   EXPECT_EQ(keysText(p.value().runs[0].keys), "UDLR");
 }
 
+TEST(ReplayText, HandbrakeKeyParsesAndWrites) {
+  const Parsed<Replay> p = parse("cardemo-replay 1\n2 HUL\n1 H\n");
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  EXPECT_EQ(p.value().runs[0].keys, (InputFrame{true, false, true, false, true}));
+  EXPECT_EQ(p.value().runs[1].keys, (InputFrame{false, false, false, false, true}));
+  EXPECT_EQ(keysText(p.value().runs[0].keys), "ULH");
+  EXPECT_EQ(keysText(p.value().runs[1].keys), "H");
+  EXPECT_EQ(p.value().runs[1].keys.bits(), 16);
+  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\n1 HH\n"), 2, "key H repeated"));
+  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\n1 h\n"), 2, "use upper-case"));
+}
+
 TEST(ReplayText, FormatThenParseRoundTrips) {
   const Replay original = parse(kReplay).value();
   const std::string text = formatReplay(original);
@@ -150,7 +162,7 @@ TEST(ReplayText, RandomReplaysRoundTrip) {
     const int runs = static_cast<int>(rng() % 20);
     for (int i = 0; i < runs; ++i) {
       r.runs.push_back({1 + static_cast<std::int64_t>(rng() % 100000),
-                        InputFrame::fromBits(static_cast<std::uint8_t>(rng() % 16))});
+                        InputFrame::fromBits(static_cast<std::uint8_t>(rng() % 32))});
     }
     if (rng() % 2) r.expect.health = static_cast<int>(rng() % 101);
     if (rng() % 2) r.expect.frames = r.totalFrames();

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "io_test_util.hpp"
@@ -119,6 +120,17 @@ TEST(SceneJson, NegativeSpeedWithinLimitIsAccepted) {
   const Parsed<Scene> p = parse(with("\"speed\": 3", "\"speed\": -1000"));
   ASSERT_TRUE(p.ok()) << p.error().toString();
   EXPECT_EQ(p.value().player.speed, -1000.0);
+}
+
+TEST(SceneJson, MaxSpeedIsOptionalAndPositive) {
+  EXPECT_EQ(parse(kScene).value().player.max_speed, std::numeric_limits<double>::infinity());
+  const Parsed<Scene> p = parse(with("\"speed\": 3", "\"speed\": 3, \"max_speed\": 5.5"));
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  EXPECT_EQ(p.value().player.max_speed, 5.5);
+  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": 3, \"max_speed\": 0")), 12,
+                      "player.max_speed: must be > 0"));
+  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": 3, \"max_speed\": 2000")), 12,
+                      "player.max_speed: must be finite with |speed| <= 1000"));
 }
 
 TEST(SceneJson, IntegralFloatHealthIsAccepted) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -17,11 +18,13 @@ constexpr InputFrame kUp{true, false, false, false};
 constexpr InputFrame kDown{false, true, false, false};
 constexpr InputFrame kLeft{false, false, true, false};
 constexpr InputFrame kRight{false, false, false, true};
+constexpr InputFrame kHandbrake{false, false, false, false, true};
 
 CarParams frictionless(CarIntegrator integrator = CarIntegrator::kSemiImplicitEuler) {
   CarParams p;
   p.drag = 0.0;
   p.rolling_resistance = 0.0;
+  p.engine_brake = 0.0;
   p.integrator = integrator;
   return p;
 }
@@ -89,6 +92,7 @@ TEST_P(EveryIntegrator, ExactAxisDirectionSurvivesStraightDriving) {
 TEST(Car, SemiImplicitEulerCirclesOnTheChordPolygonOfTheBicycleRadius) {
   CarParams p = frictionless(CarIntegrator::kSemiImplicitEuler);
   p.lock_speed = 1e12;  // no narrowing at 10 m/s
+  p.grip = 1e9;         // and no grip limit
   p.max_steer = 0.3;
   CarState s;
   s.position = {3.0, -2.0};
@@ -232,8 +236,141 @@ TEST_P(EveryIntegrator, SteeringIsRateLimitedAndNarrowsWithSpeed) {
   CarParams cruise = p;
   cruise.drag = 0.0;
   cruise.rolling_resistance = 0.0;
+  cruise.engine_brake = 0.0;
+  cruise.grip = 1e9;  // the geometry alone
   for (int i = 0; i < 200; ++i) s = integrateCar(s, kLeft, cruise, kDt);
   EXPECT_DOUBLE_EQ(s.steer, 0.5 * p.max_steer);
+}
+
+TEST_P(EveryIntegrator, EngineBrakingStopsAtTheConstantDecelerationDistance) {
+  // No drag: v' = -(engine_brake + rolling) until the stop, so d = v0^2 / (2 a).
+  CarParams p = withIntegrator(GetParam());
+  p.drag = 0.0;
+  const double v0 = 50.0 / 3.6;
+  const double a = p.engine_brake + p.rolling_resistance;
+  CarState s;
+  s.speed = v0;
+  int steps = 0;
+  while (s.speed > 0.0 && steps < 100000) {
+    s = integrateCar(s, kNone, p, kDt);
+    ++steps;
+  }
+  EXPECT_EQ(s.speed, 0.0);
+  // First-order schemes are off by at most one step's travel.
+  EXPECT_NEAR(s.position.x(), v0 * v0 / (2.0 * a), v0 * kDt);
+  EXPECT_NEAR(steps * kDt, v0 / a, kDt);
+}
+
+TEST_P(EveryIntegrator, GripCapsTheTurnAtTheGripRadius) {
+  // Constant speed (no resistance): the wheel settles on the grip lock and the car circles with
+  // radius v^2 / grip, so the heading turns by grip / v per second.
+  CarParams p = frictionless(GetParam());
+  const double v = 20.0;
+  ASSERT_LT(gripLock(p, v), steeringLock(p, v));
+  CarState s;
+  s.speed = v;
+  for (int i = 0; i < 240; ++i) s = integrateCar(s, kLeft, p, kDt);
+  EXPECT_EQ(s.steer, gripLock(p, v));
+  EXPECT_EQ(s.speed, v);
+  const double radius = p.wheelbase / std::tan(s.steer);
+  EXPECT_NEAR(radius, v * v / p.grip, 1e-9 * radius);
+  const double h0 = s.heading;
+  for (int i = 0; i < 60; ++i) s = integrateCar(s, kLeft, p, kDt);
+  EXPECT_NEAR(wrapRadians(s.heading - h0), 0.5 * p.grip / v, 1e-12);
+  EXPECT_EQ(s.slip, 0.0);
+  // At parking speeds the steering geometry, not the grip, limits the lock.
+  EXPECT_EQ(effectiveLock(p, 3.0, false), steeringLock(p, 3.0));
+  EXPECT_EQ(effectiveLock(p, v, true), steeringLock(p, v));
+}
+
+TEST_P(EveryIntegrator, HandbrakeDeceleratesAtItsRate) {
+  CarParams p = frictionless(GetParam());
+  CarState s;
+  s.speed = 10.0;
+  for (int i = 0; i < 120; ++i)
+    s = integrateCar(s, InputFrame{true, false, false, false, true}, p, kDt);
+  EXPECT_NEAR(s.speed, 10.0 - p.handbrake_decel, 1e-9);
+  EXPECT_NEAR(s.position.x(), 10.0 - 0.5 * p.handbrake_decel, p.handbrake_decel * kDt);
+  while (s.speed > 0.0) s = integrateCar(s, kHandbrake, p, kDt);
+  EXPECT_EQ(s.speed, 0.0);
+  // It holds the car at rest against the throttle.
+  s = integrateCar(s, InputFrame{true, false, false, false, true}, p, kDt);
+  EXPECT_EQ(s.speed, 0.0);
+}
+
+TEST_P(EveryIntegrator, HandbrakeTurnYawsWhileTheVelocityLags) {
+  const CarParams p = withIntegrator(GetParam());
+  CarState s;
+  s.speed = 15.0;
+  CarState plain = s;
+  double slowest = s.speed;
+  for (int i = 0; i < 60; ++i) {
+    s = integrateCar(s, InputFrame{false, false, true, false, true}, p, kDt);
+    plain = integrateCar(plain, kLeft, p, kDt);
+    slowest = std::min(slowest, s.velocity().norm());
+  }
+  const Eigen::Vector2d v = s.velocity();
+  const double course = std::atan2(v.y(), v.x());
+  EXPECT_GT(s.heading, 2.0 * plain.heading);  // the rear swings round
+  EXPECT_GT(s.heading, 0.5);
+  // The velocity turns only by the rear grip: a = |v| dcourse/dt <= handbrake_grip * grip.
+  EXPECT_GT(course, 0.0);
+  EXPECT_LE(course, p.handbrake_grip * p.grip * 0.5 / slowest);
+  EXPECT_LT(s.slip, -p.skid_slip);  // sliding outwards (to the right of the heading)
+  // Released, the slip decays at the full grip rate.
+  const double slip = s.slip;
+  s = integrateCar(s, kNone, p, kDt);
+  EXPECT_NEAR(s.slip, slip + p.grip * kDt, 1e-12);
+}
+
+TEST_P(EveryIntegrator, SlipMovesTheCarAndDecaysUnlessAgainstASurface) {
+  const CarParams p = withIntegrator(GetParam());
+  CarState s;
+  s.slip = 3.0;
+  s = integrateCar(s, kNone, p, kDt);
+  EXPECT_EQ(s.position.x(), 0.0);
+  EXPECT_DOUBLE_EQ(s.position.y(), 3.0 * kDt);
+  EXPECT_DOUBLE_EQ(s.slip, 3.0 - p.grip * kDt);
+  for (int i = 0; i < 60; ++i) s = integrateCar(s, kNone, p, kDt);
+  EXPECT_EQ(s.slip, 0.0);
+  EXPECT_NEAR(s.position.y(), 3.0 * 3.0 / (2.0 * p.grip), 3.0 * kDt);
+  // Against a surface the decay stops where the velocity runs along it: here a wall at +y (normal
+  // +y from the car) with the car moving at 4 m/s along a heading 10 degrees into it.
+  CarState held;
+  held.heading = 10.0 * std::numbers::pi / 180.0;
+  held.direction = unitFromRadians(held.heading);
+  held.speed = 4.0;
+  held.surface_normal = {0.0, 1.0};
+  const double along = -4.0 * std::tan(held.heading);  // velocity (4 / cos 10, 0)
+  held.slip = along - 0.01;  // drifting off the wall: the decay would turn it back into it
+  CarParams coast = p;
+  coast.engine_brake = 0.0;
+  coast.rolling_resistance = 0.0;
+  coast.drag = 0.0;
+  held = integrateCar(held, kNone, coast, kDt);
+  EXPECT_DOUBLE_EQ(held.slip, along);
+  EXPECT_NEAR(held.velocity().y(), 0.0, 1e-12);
+}
+
+TEST_P(EveryIntegrator, SpeedCapIsReachedAndHeld) {
+  CarParams p = withIntegrator(GetParam());
+  p.max_speed = 5.5;
+  CarState s;
+  double top = 0.0;
+  for (int i = 0; i < 120 * 10; ++i) {
+    s = integrateCar(s, kUp, p, kDt);
+    ASSERT_LE(s.speed, p.max_speed);
+    top = std::max(top, s.speed);
+  }
+  // Semi-implicit Euler applies the resistance after the capped command, so it stays a hair below.
+  EXPECT_GT(top, p.max_speed - 0.01);
+  EXPECT_GT(s.speed, p.max_speed - 0.01);
+  // An initial speed above the cap is not clamped: the engine just stops pushing.
+  CarState fast;
+  fast.speed = 8.0;
+  fast = integrateCar(fast, kUp, p, kDt);
+  EXPECT_LT(fast.speed, 8.0);
+  EXPECT_GT(fast.speed, 7.9);
 }
 
 TEST(Car, BoxFollowsTheState) {

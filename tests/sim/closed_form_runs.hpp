@@ -74,7 +74,8 @@ inline ClosedFormRun coastRun() {
   const CarParams p = r.params;
   const CarState s0 = r.start;
   r.exact = [p, s0](double t) {
-    const SpeedAndDistance sd = coasting(s0.speed, p.rolling_resistance, p.drag, t);
+    const SpeedAndDistance sd =
+        coasting(s0.speed, p.rolling_resistance + p.engine_brake, p.drag, t);
     CarState s = alongArc(s0, 0.0, sd.distance);
     s.speed = sd.speed;
     return s;
@@ -87,11 +88,12 @@ inline ClosedFormRun circleRun() {
   ClosedFormRun r{"circle", {}, {}, {false, false, true, false}, {}};
   r.params.drag = 0.0;
   r.params.rolling_resistance = 0.0;
+  r.params.engine_brake = 0.0;
   r.start.position = {3.0, -2.0};
   r.start.heading = 0.7;
   r.start.direction = {std::cos(0.7), std::sin(0.7)};
   r.start.speed = 10.0;
-  r.start.steer = steeringLock(r.params, r.start.speed);
+  r.start.steer = effectiveLock(r.params, r.start.speed, false);
   const CarParams p = r.params;
   const CarState s0 = r.start;
   r.exact = [p, s0](double t) {

@@ -19,6 +19,7 @@ constexpr InputFrame kNone{};
 constexpr InputFrame kUp{true, false, false, false};
 
 int expectedDamage(const WorldSettings& s, double speed) {
+  if (speed < s.damage_threshold) return 0;
   return std::clamp(static_cast<int>(std::ceil(s.damage_per_mps * speed)), s.damage_min,
                     s.damage_max);
 }
@@ -94,8 +95,8 @@ TEST(World, TouchingAtFrameZeroIsAHitAtFrameZero) {
   EXPECT_EQ(world.hits()[0].frame, 0);
   EXPECT_EQ(world.hits()[0].id, "T");
   EXPECT_EQ(world.hits()[0].speed, 0.0);
-  EXPECT_EQ(world.hits()[0].damage, WorldSettings{}.damage_min);
-  EXPECT_EQ(world.health(), 100 - WorldSettings{}.damage_min);
+  EXPECT_EQ(world.hits()[0].damage, 0);  // no closing speed: below the damage threshold
+  EXPECT_EQ(world.health(), 100);
   EXPECT_EQ(world.stats().contacts, 1);
   for (int f = 0; f < 100; ++f) world.step(kNone);
   EXPECT_EQ(world.hits().size(), 1u);
@@ -226,12 +227,12 @@ TEST(World, StationaryCarSkipsBroadPhaseQueries) {
 }
 
 TEST(World, RotationProofBoxGivesTheSameHitsWithMoreCandidates) {
-  const Scene scene = test::parkingLot(7);
+  const Scene scene = test::parkingLot(11);
   WorldSettings proof;
   proof.broad_phase_box = BroadPhaseBox::kRotationProof;
   World tight(scene);
   World wide(scene, proof);
-  for (const InputFrame& in : test::scriptedDrive(7, 3000)) {
+  for (const InputFrame& in : test::scriptedDrive(11, 4000)) {
     tight.step(in);
     wide.step(in);
   }
@@ -243,6 +244,32 @@ TEST(World, RotationProofBoxGivesTheSameHitsWithMoreCandidates) {
   }
   EXPECT_EQ(tight.stateHash(), wide.stateHash());
   EXPECT_GE(wide.stats().broadphase_candidates, tight.stats().broadphase_candidates);
+}
+
+TEST(World, RenderingAccessorsFollowTheInput) {
+  World world(sceneWith({}));
+  EXPECT_EQ(world.lastInput(), kNone);
+  EXPECT_FALSE(world.braking());
+  EXPECT_FALSE(world.reversing());
+  for (int f = 0; f < 120; ++f) world.step(kUp);
+  EXPECT_EQ(world.lastInput(), kUp);
+  EXPECT_FALSE(world.braking());
+  EXPECT_EQ(world.slipSpeed(), 0.0);
+  EXPECT_FALSE(world.sliding());
+  const InputFrame brake{false, true, false, false};
+  world.step(brake);
+  EXPECT_EQ(world.lastInput(), brake);
+  EXPECT_TRUE(world.braking());
+  EXPECT_FALSE(world.reversing());
+  while (world.car().speed > 0.0) world.step(brake);
+  for (int f = 0; f < 60; ++f) world.step(brake);  // stopped, so the same key reverses
+  EXPECT_TRUE(world.reversing());
+  EXPECT_FALSE(world.braking());
+  world.step(kUp);  // throttle against the reverse roll brakes
+  EXPECT_TRUE(world.braking());
+  const InputFrame handbrake{false, false, false, false, true};
+  world.step(handbrake);
+  EXPECT_TRUE(world.braking());
 }
 
 }  // namespace
