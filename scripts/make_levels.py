@@ -9,7 +9,7 @@ then built around its end pose (the bay where the car stops, the player's start 
 before it), so the replay parks whatever the car physics. Run it again after a physics change and
 re-check the hits and parked frames it prints.
 
-usage: scripts/make_levels.py CARDEMO_BINARY
+usage: scripts/make_levels.py CARDEMO_BINARY [LEVEL_NUMBER...]
 """
 import csv
 import json
@@ -24,6 +24,8 @@ OUT = os.path.join(ROOT, "assets")
 CARDEMO = None
 TMP = tempfile.mkdtemp(prefix="cardemo-levels-")
 EMPTY = os.path.join(TMP, "empty.json")
+ONLY = []
+MAX_SPEED = 5.5  # m/s (about 20 km/h): parking levels are slow
 
 
 def run(scene, inputs):
@@ -41,14 +43,38 @@ def f(row, key):
 
 
 def plan(steps, tail=60):
+    """Frame counts for `steps`. A step is (KEYS, N frames), (KEYS, until) or
+    (("KEYS", n), ("KEYS", m), until): the two runs repeated (a pedal pulsed to hold a slow
+    speed against engine braking) until the condition holds."""
     fixed = []
-    for keys, until in steps:
+
+    def first(keys, limit, until):
+        rows = run(EMPTY, fixed + ["%d %s" % (limit, keys)])
+        n = sum(int(s.split()[0]) for s in fixed)
+        return next((i - n for i in range(n + 1, len(rows)) if until(rows[i])), None)
+
+    for step in steps:
+        if len(step) == 3:
+            (a, na), (b, nb), until = step
+            for _ in range(200):
+                k = first(a, na, until)
+                if k is not None:
+                    fixed.append("%d %s" % (k, a))
+                    break
+                fixed.append("%d %s" % (na, a))
+                k = first(b, nb, until)
+                if k is not None:
+                    fixed.append("%d %s" % (k, b))
+                    break
+                fixed.append("%d %s" % (nb, b))
+            else:
+                sys.exit("make_levels: pulses of %s/%s never meet their condition" % (a, b))
+            continue
+        keys, until = step
         if isinstance(until, int):
             fixed.append("%d %s" % (until, keys))
             continue
-        rows = run(EMPTY, fixed + ["3000 " + keys])
-        n = sum(int(s.split()[0]) for s in fixed)
-        k = next((i - n for i in range(n + 1, len(rows)) if until(rows[i])), None)
+        k = first(keys, 3000, until)
         if k is None:
             sys.exit("make_levels: %s never meets its condition after %s" % (keys, fixed))
         fixed.append("%d %s" % (k, keys))
@@ -67,7 +93,7 @@ def scene(name, order, title, start, bay, goal, parked, obstacles, markings, bou
     g.update(goal)
     return {"format":"cardemo-scene/1","name":name,"level":{"order":order,"title":title},
             "bounds":{"min":bounds[0],"max":bounds[1]},
-            "player":{"x":r(start[0]),"y":r(start[1]),"heading_deg":0,"length":4.5,"width":1.8,"health":100},
+            "player":{"x":r(start[0]),"y":r(start[1]),"heading_deg":0,"length":4.5,"width":1.8,"health":100,"max_speed":MAX_SPEED},
             "goal":g,"parked":parked,"obstacles":obstacles,"markings":markings}
 
 def dump(obj):
@@ -113,7 +139,7 @@ def make1(S,B):
       {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
       parked,obstacles,mk,[[r(S[0]-6),by-10],[bx+6,by+10]])
 LEVEL1={'file':'level-1-straight','bay':(0.0,0.0),'make':make1,'comment':'Level 1: drive straight into the bay ahead and stop.',
-    'steps':[('U',120),('.',lambda r:f(r,'x')>12.9),('D',lambda r:f(r,'speed')<=0),('.',30)]}
+    'steps':[('U',lambda r:f(r,'x')>9),('.',30),('D',lambda r:f(r,'speed')<=0),('.',30)]}
 
 def make2(S,B):
     bx,by=B[0],B[1]
@@ -126,16 +152,16 @@ def make2(S,B):
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":90},
       parked,obstacles,mk,[[r(S[0]-14),r(S[1]-10)],[bx+12,by+5]])
 LEVEL2={'file':'level-2-reverse','bay':(0.0,5.0),'make':make2,'comment':'Level 2: drive past the bay, stop, reverse in on full left lock, straighten, stop.',
-    'steps':[('U',100),('D',lambda r:f(r,'speed')<=0),('DL',90),('L',lambda r:f(r,'heading_deg')<-87.5),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('D',40),('.',60),('U',lambda r:f(r,'speed')>=0),('.',30)]}
+    'steps':[('U',100),('D',lambda r:f(r,'speed')<=0),('DL',60),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<-85.5),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('D',40),('.',60),('U',lambda r:f(r,'speed')>=0),('.',30)]}
 
 def make3(S,B):
     bx,by=B[0],B[1]
-    parked=[car('F1',bx+6.6,by,0),car('F2',bx+6.6+5.6,by,0),car('R1',bx-5.3,by,0),car('R2',bx-11.0,by,0),
+    parked=[car('F1',bx+7.6,by,0),car('F2',bx+7.6+5.6,by,0),car('R1',bx-5.0,by,0),car('R2',bx-10.6,by,0),
             car('O1',bx-6.0,by+7.6,180),car('O2',bx+3.0,by+7.6,180)]
     obstacles=[{"id":"kerb","points":box(bx,by-1.8,16.0,0.2)},
                {"id":"building","points":box(bx,by+10.4,16.0,0.3)}]
     mk=[line((bx-13.8,by+1.2),(bx+13.8,by+1.2)),
-        line((bx-3.05,by-1.2),(bx-3.05,by+1.2)),line((bx+6.6-2.25,by-1.2),(bx+6.6-2.25,by+1.2)),
+        line((bx-2.75,by-1.2),(bx-2.75,by+1.2)),line((bx+7.6-2.25,by-1.2),(bx+7.6-2.25,by+1.2)),
         line((bx-13.8,by+6.4),(bx+13.8,by+6.4)),
         line((bx-13.8,by+3.8),(bx-11.8,by+3.8)),line((bx-9.8,by+3.8),(bx-7.8,by+3.8)),
         line((bx-5.8,by+3.8),(bx-3.8,by+3.8)),line((bx-1.8,by+3.8),(bx+0.2,by+3.8)),
@@ -146,7 +172,7 @@ def make3(S,B):
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":120},
       parked,obstacles,mk,[[bx-16,by-2.5],[bx+16,by+11]])
 LEVEL3={'file':'level-3-parallel','bay':(0.0,0.0),'make':make3,'comment':'Level 3: stop beside the front car, reverse on right lock, straighten, then left lock into the space.',
-    'steps':[('U',90),('D',lambda r:f(r,'speed')<=0),('DR',70),('R',lambda r:f(r,'heading_deg')>42),('D',20),('.',60),('DL',20),('L',lambda r:f(r,'heading_deg')<2.5),('U',lambda r:f(r,'speed')>=0),('.',30)]}
+    'steps':[('U',90),('D',lambda r:f(r,'speed')<=0),('DR',60),(('R',8),('DR',16),lambda r:f(r,'heading_deg')>42),('D',30),('.',20),('DL',20),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<2.5),('U',lambda r:f(r,'speed')>=0),('.',30)]}
 
 def make4(S,B):
     bx,by=B[0],B[1]
@@ -167,20 +193,25 @@ def make4(S,B):
       {"position_tolerance":0.3,"heading_tolerance_deg":5,"max_speed":0.3,"par_time":14,"time_limit":90},
       parked,obstacles,mk,[[r(S[0]-10),r(S[1]-5)],[r(bx+9),r(back+1)]])
 LEVEL4={'file':'level-4-garage','bay':(0.0,0.0),'make':make4,'comment':'Level 4: follow the lane, turn in on full left lock, straighten on the centre line, stop short of the back wall.',
-    'steps':[('U',60),('.',100),('L',lambda r:f(r,'heading_deg')>89.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('U',40),('.',lambda r:f(r,'y')>8.9),('D',lambda r:f(r,'speed')<=0),('.',30)]}
+    'steps':[('U',60),('.',30),(('L',16),('UL',8),lambda r:f(r,'heading_deg')>87.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),(('.',16),('U',8),lambda r:f(r,'y')>8.9),('D',lambda r:f(r,'speed')<=0),('.',30)]}
 
 
 def main():
     global CARDEMO
-    if len(sys.argv) != 2:
+    global ONLY
+    if len(sys.argv) < 2:
         sys.exit(__doc__)
     CARDEMO = os.path.abspath(sys.argv[1])
+    ONLY = sys.argv[2:]
     with open(EMPTY, "w") as f:
         json.dump({"format": "cardemo-scene/1", "name": "empty", "parked": [],
-                   "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8}}, f)
+                   "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8,
+                              "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
         for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4):
+            if ONLY and level["file"].split("-")[1] not in ONLY:
+                continue
             build(level)
     finally:
         shutil.rmtree(TMP, ignore_errors=True)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Builds cardemo and starts the game on the bundled parking lot.
+# Builds cardemo and starts the game: the scene picker (parking levels and the free-drive lot).
 # With a display: the SDL2 window (arrow keys drive, F1 lists every key). Without one: the bundled
 # demo drive is replayed headless, its summary printed, and one frame is drawn to a PNG.
-# Extra arguments go to `cardemo play` (e.g. --record drive.replay).
+# Extra arguments go to `cardemo play` (e.g. a SCENE file, --record drive.replay).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/ensure-packages.sh" $(grep -v '^#' "$root/scripts/packages.txt")
@@ -13,7 +13,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEM
   "${cardemo_launcher[@]}" >/dev/null
 cmake --build "$build" --target cardemo -j"$(nproc)"
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  exec "$build/cardemo" play "$root/assets/scenes/parking-lot.json" "$@"
+  exec "$build/cardemo" play "$@"
 fi
 echo "No display: replaying the demo drive headless instead of opening the window."
 "$build/cardemo" replay "$root/assets/replays/demo.replay"

@@ -8,8 +8,7 @@
 
 // Syntax (docs/replay.md): after the header `cardemo-replay 1`, each line is one of
 //   scene PATH | hz N | COUNT KEYS (`.` or letters of U D L R H) | expect health H | expect hits N
-//   | expect hit FRAME ID | expect frames N | expect hash HEX16 | expect parked FRAME
-//   | expect parked never
+//   | expect hit FRAME ID | expect frames N | expect hash HEX16 | expect parked FRAME|never
 // `#` starts a comment at the start of a line or after a space or tab (so ids and paths may hold
 // '#'). Trailing spaces and a UTF-8 byte order mark before the header are tolerated (editors on
 // Windows add one).

@@ -2,6 +2,7 @@
 
 #include <SDL.h>
 
+#include <cstdio>
 #include <memory>
 
 #include "platform/sdl_canvas.hpp"

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -214,6 +215,50 @@ TEST(Cli, Collide3dAndBadRows) {
   const CliResult short_row = cardemo("collide -", "1,2,3\n");
   EXPECT_EQ(short_row.status, 2);
   EXPECT_EQ(short_row.err.rfind("-:1:", 0), 0u) << short_row.err;
+}
+
+TEST(Cli, ExpectParkedIsCheckedPrintedAndInTheJson) {
+  const std::string level = asset("scenes/levels/level-1-straight.json");
+  const std::string golden = slurp(asset("replays/level-1-straight.replay"));
+  const auto at = golden.find("expect parked ");
+  ASSERT_NE(at, std::string::npos);
+  const std::string frame = golden.substr(at + 14, golden.find('\n', at) - at - 14);
+
+  // The golden drive with a wrong parked frame: exit 1 and the difference named.
+  std::string inputs;
+  for (std::size_t start = 0; start < golden.size();) {
+    const std::size_t end = golden.find('\n', start);
+    const std::string line = golden.substr(start, end - start);
+    if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0]))) inputs += line + "\n";
+    start = end == std::string::npos ? golden.size() : end + 1;
+  }
+  const auto wrong = writeTemp(
+      "parked.replay", "cardemo-replay 1\nscene " + level + "\n" + inputs + "expect parked 5\n");
+  const CliResult bad = cardemo("replay " + wrong.string());
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.out.find("FAILED    parked: expected frame 5, got frame " + frame),
+            std::string::npos)
+      << bad.out;
+
+  const CliResult printed = cardemo("replay " + wrong.string() + " --print-expect");
+  EXPECT_NE(printed.out.find("expect parked " + frame + "\n"), std::string::npos) << printed.out;
+
+  const CliResult json = cardemo("replay " + wrong.string() + " --json -");
+  EXPECT_NE(json.out.find("\"parked\": " + frame), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"stars\": 3"), std::string::npos) << json.out;
+
+  // Stopping short of the bay: never parked; a scene without a goal cannot satisfy the line.
+  const auto never = writeTemp(
+      "never.replay", "cardemo-replay 1\nscene " + level + "\n60 U\n200 D\nexpect parked never\n");
+  EXPECT_EQ(cardemo("replay " + never.string()).status, 0);
+  const auto no_goal =
+      writeTemp("nogoal.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") +
+                                     "\n10 .\nexpect parked never\n");
+  const CliResult r = cardemo("replay " + no_goal.string() + " --json -");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("parked: expected never, but the scene has no goal"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("\"parked\": null"), std::string::npos) << r.out;
 }
 
 }  // namespace

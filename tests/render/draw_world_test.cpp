@@ -297,11 +297,11 @@ TEST(Hud, HealthBarFillIsProportionalToHealth) {
 }
 
 TEST(Hud, HealthBarInTheFrameFollowsTheWorldsHealth) {
-  // Overlapping A at frame 0 while driving into it at 5 m/s is a hit at frame 0 (above the damage
-  // threshold), so health starts below the maximum.
-  Scene scene = sceneWith({parkedCar("A", 3.0, 0, 90)});
-  scene.player.speed = 5.0;
+  // A crash at 10 m/s into A takes health (contact at rest no longer does).
+  Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
+  scene.player.speed = 10.0;
   World world(std::move(scene));
+  for (int i = 0; i < 240 && world.hits().empty(); ++i) world.step(InputFrame{});
   ASSERT_LT(world.health(), 100);
   Camera camera;
   const RecordingCanvas canvas = drawn(world, camera);
@@ -340,12 +340,14 @@ TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
 }
 
 TEST(Hud, GameOverPanelAtZeroHealth) {
-  Scene scene = sceneWith({parkedCar("A", 3.0, 0, 90)});
+  Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
   scene.player.health = 1;
-  scene.player.speed = 5.0;  // a hit above the damage threshold
+  scene.player.speed = 10.0;
   World world(std::move(scene));
+  for (int i = 0; i < 240 && !world.gameOver(); ++i) world.step(InputFrame{});
   ASSERT_TRUE(world.gameOver());
   Camera camera;
+  camera.center = world.car().position;
   EXPECT_TRUE(drawn(world, camera).hasText("GAME OVER"));
   World alive(sceneWith({}));
   EXPECT_FALSE(drawn(alive, camera).hasText("GAME OVER"));

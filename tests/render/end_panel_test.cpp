@@ -87,9 +87,12 @@ TEST(EndPanel, DrawsTitleRowsAndHintOutsideTheCar) {
 }
 
 TEST(EndPanel, GameOverBesideTheCarWithALevelSummary) {
-  Scene scene = test::sceneWith({test::parkedCar("A", 3.0, 0, 90)});
+  // Health 1 and a crash at 10 m/s into the car ahead.
+  Scene scene = test::sceneWith({test::parkedCar("A", 8.0, 0, 90)});
   scene.player.health = 1;
-  const World world(std::move(scene));
+  scene.player.speed = 10.0;
+  World world(std::move(scene));
+  for (int i = 0; i < 240 && !world.gameOver(); ++i) world.step(InputFrame{});
   ASSERT_TRUE(world.gameOver());
   RecordingCanvas canvas;
   DrawOptions options;
