@@ -102,7 +102,11 @@ std::optional<std::string> runScenePicker(const std::vector<LevelEntry>& entries
   }
   renderer.reset();
   window.reset();
-  SDL_Quit();
+  // With a scene chosen SDL stays initialised for the game window (runGameWindow's SDL_Init only
+  // counts up, and its SDL_Quit ends both): quitting X11 video and starting it again in the same
+  // process sometimes left the game window off the display under Xvfb on a loaded machine (the game
+  // ran, xdotool saw only the root window).
+  if (!chosen) SDL_Quit();
   return chosen;
 }
 

@@ -11,8 +11,8 @@
 namespace cardemo {
 
 /// Opens a window listing `entries` (with their best scores) and returns the path chosen with
-/// Enter, or nullopt on Esc or window close. `status` is 1 when no window could be
-/// opened (the message is on stderr), else 0.
+/// Enter (SDL is left initialised for the game window), or nullopt on Esc or window close. `status`
+/// is 1 when no window could be opened (the message is on stderr), else 0.
 [[nodiscard]] std::optional<std::string> runScenePicker(const std::vector<LevelEntry>& entries,
                                                         const BestScores& best, int& status);
 
