@@ -126,6 +126,20 @@ std::int64_t lastFrame(const fs::path& log) {
   return last;
 }
 
+nlohmann::json loadJson(const std::string& text) {
+  return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+}
+
+// The headless replay of `replay`'s summary JSON (null on failure).
+nlohmann::json replayHeadless(const fs::path& replay, const fs::path& scratch) {
+  std::string out;
+  if (shell("", std::string(CARDEMO_BINARY) + " replay " + replay.string() + " --json -", &out,
+            scratch) != 0) {
+    return nullptr;
+  }
+  return loadJson(out);
+}
+
 class PlayE2e : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -208,10 +222,6 @@ class PlayE2e : public ::testing::Test {
   std::unique_ptr<Child> xvfb_;
 };
 
-nlohmann::json loadJson(const std::string& text) {
-  return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-}
-
 const std::string kLot = std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/parking-lot.json";
 
 TEST_F(PlayE2e, DriveIntoTheCarAheadThenReplayHeadless) {
@@ -244,12 +254,8 @@ TEST_F(PlayE2e, DriveIntoTheCarAheadThenReplayHeadless) {
   ASSERT_TRUE(replay.ok()) << replay.error().toString();
   EXPECT_EQ(replay.value().totalFrames(), live["frames"].get<std::int64_t>());
 
-  std::string out;
-  ASSERT_EQ(shell("", std::string(CARDEMO_BINARY) + " replay " + record.string() + " --json -",
-                  &out, dir_ / "replay.out"),
-            0);
-  const nlohmann::json headless = loadJson(out);
-  ASSERT_TRUE(headless.is_object()) << out;
+  const nlohmann::json headless = replayHeadless(record, dir_ / "replay.out");
+  ASSERT_TRUE(headless.is_object()) << slurp(dir_ / "replay.out");
   EXPECT_EQ(headless["hash"], live["hash"]);
   EXPECT_EQ(headless["health"], live["health"]);
   EXPECT_EQ(headless["hits"], live["hits"]);
@@ -308,16 +314,6 @@ bool waitForFrame(const fs::path& log, std::int64_t frame, std::chrono::seconds 
     std::this_thread::sleep_for(50ms);
   }
   return lastFrame(log) >= frame;
-}
-
-// The headless replay of `replay`'s summary JSON (null on failure).
-nlohmann::json replayHeadless(const fs::path& replay, const fs::path& scratch) {
-  std::string out;
-  if (shell("", std::string(CARDEMO_BINARY) + " replay " + replay.string() + " --json -", &out,
-            scratch) != 0) {
-    return nullptr;
-  }
-  return loadJson(out);
 }
 
 TEST_F(PlayE2e, HelpHoldsTheSimulation) {
@@ -555,12 +551,8 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   EXPECT_EQ(live["score"]["frames"], live["parked"]);
   EXPECT_GE(live["score"]["stars"].get<int>(), 2);
 
-  std::string out;
-  ASSERT_EQ(shell("", std::string(CARDEMO_BINARY) + " replay " + record.string() + " --json -",
-                  &out, dir_ / "replay.out"),
-            0);
-  const nlohmann::json headless = loadJson(out);
-  ASSERT_TRUE(headless.is_object()) << out;
+  const nlohmann::json headless = replayHeadless(record, dir_ / "replay.out");
+  ASSERT_TRUE(headless.is_object()) << slurp(dir_ / "replay.out");
   EXPECT_EQ(headless["hash"], live["hash"]);
   EXPECT_EQ(headless["parked"], live["parked"]);
   EXPECT_EQ(headless["score"], live["score"]);
