@@ -284,26 +284,4 @@ std::string lotSceneJson(std::size_t n) {
   return text;
 }
 
-std::vector<InputFrame> lotDrive(std::size_t frames) {
-  // keys (U D L R) and frame counts: 10 s at 120 Hz, about 40 m along the aisle.
-  struct Run {
-    int count;
-    InputFrame keys;
-  };
-  const InputFrame up{true, false, false, false}, none{}, left{false, false, true, false},
-      right{false, false, false, true}, brake{false, true, false, false},
-      up_left{true, false, true, false};
-  const Run script[] = {{120, up},   {60, none},   {20, left},    {40, right},
-                        {20, left},  {300, none},  {45, up_left}, {45, right},
-                        {200, none}, {120, brake}, {120, none},   {110, up}};
-  std::vector<InputFrame> out;
-  out.reserve(frames);
-  while (out.size() < frames) {
-    for (const Run& r : script) {
-      for (int k = 0; k < r.count && out.size() < frames; ++k) out.push_back(r.keys);
-    }
-  }
-  return out;
-}
-
 }  // namespace cardemo::bench

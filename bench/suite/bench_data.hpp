@@ -9,7 +9,6 @@
 #include "geometry/aabb.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/obb3.hpp"
-#include "sim/input_frame.hpp"
 #include "sim/scene.hpp"
 
 namespace cardemo::bench {
@@ -65,8 +64,5 @@ struct LotCar {
 [[nodiscard]] Scene lotScene(std::size_t n);
 /// The same scene as scene JSON text (cardemo-scene/1), ids like "00N-001".
 [[nodiscard]] std::string lotSceneJson(std::size_t n);
-/// A scripted drive of `frames` steps for lotScene: accelerate down the aisle, weave, brush the
-/// north row, brake, reverse; repeated as needed.
-[[nodiscard]] std::vector<InputFrame> lotDrive(std::size_t frames);
 
 }  // namespace cardemo::bench
