@@ -2,6 +2,7 @@
 """Draws docs/img/box2d-offsets.png: disagreement rate against world offset.
 
 Usage: scripts/plot_box2d_offsets.py [path/to/cardemo] [--pairs N] [--seed S] [--out FILE]
+                                    [--sweep-csv FILE]   (a saved `compare-sweep --all-exact --csv`)
 
 Runs `cardemo compare-sweep --all-exact --csv` (the GMP oracle on every pair), sums every gap
 bin (pairs within 1 m of touching) per offset, and plots the percentage of pairs on which each
@@ -28,6 +29,7 @@ def main(argv):
     binary = os.path.join(ROOT, "build", "cardemo")
     pairs, seed = "1000000", "1"
     out = os.path.join(ROOT, "docs", "img", "box2d-offsets.png")
+    given_csv = None
     args = list(argv)
     while args:
         a = args.pop(0)
@@ -35,6 +37,8 @@ def main(argv):
             pairs = args.pop(0)
         elif a == "--seed":
             seed = args.pop(0)
+        elif a == "--sweep-csv":
+            given_csv = args.pop(0)
         elif a == "--out":
             out = args.pop(0)
         else:
@@ -51,12 +55,13 @@ def main(argv):
     import matplotlib.pyplot as plt
 
     with tempfile.TemporaryDirectory() as tmp:
-        csv_path = os.path.join(tmp, "sweep.csv")
+        csv_path = given_csv or os.path.join(tmp, "sweep.csv")
         # Exit 1 would mean cardemo disagreed; the plot still shows it, so only 2 is fatal.
-        r = subprocess.run([binary, "compare-sweep", "--all-exact", "--pairs", pairs, "--seed",
-                            seed, "--csv", csv_path], stdout=subprocess.DEVNULL)
-        if r.returncode not in (0, 1):
-            sys.exit(f"compare-sweep failed with exit {r.returncode}")
+        if not given_csv:
+            r = subprocess.run([binary, "compare-sweep", "--all-exact", "--pairs", pairs, "--seed",
+                                seed, "--csv", csv_path], stdout=subprocess.DEVNULL)
+            if r.returncode not in (0, 1):
+                sys.exit(f"compare-sweep failed with exit {r.returncode}")
         with open(csv_path, newline="") as f:
             rows = list(csv.DictReader(f))
 

@@ -3,6 +3,7 @@
 Box2D on one plot, one point per world offset (0, 1e3, 1e5, 1e7 m).
 
 Usage: scripts/plot_cost_error.py [BUILD] [--pairs N] [--seed S] [--repetitions R] [--out FILE]
+                                  [--sweep-csv FILE]   (a saved `compare-sweep --all-exact --csv`)
 
 Runs, from BUILD (default build/):
   bench/cardemo_bench --benchmark_filter='^offset/' --benchmark_repetitions=R (cost: CPU ns per
@@ -33,6 +34,7 @@ def main(argv):
     build = os.path.join(ROOT, "build")
     pairs, seed, reps = "1000000", "1", "5"
     out = os.path.join(ROOT, "docs", "img", "cost-vs-error.png")
+    given_csv = None
     args = list(argv)
     while args:
         a = args.pop(0)
@@ -42,6 +44,8 @@ def main(argv):
             seed = args.pop(0)
         elif a == "--repetitions":
             reps = args.pop(0)
+        elif a == "--sweep-csv":
+            given_csv = args.pop(0)
         elif a == "--out":
             out = args.pop(0)
         else:
@@ -64,11 +68,13 @@ def main(argv):
                        check=True, stdout=subprocess.DEVNULL)
         with open(bench_json) as f:
             data = json.load(f)
-        sweep_csv = os.path.join(tmp, "sweep.csv")
-        r = subprocess.run([os.path.join(build, "cardemo"), "compare-sweep", "--all-exact", "--pairs",
-                            pairs, "--seed", seed, "--csv", sweep_csv], stdout=subprocess.DEVNULL)
-        if r.returncode not in (0, 1):
-            sys.exit(f"compare-sweep failed with exit {r.returncode}")
+        sweep_csv = given_csv or os.path.join(tmp, "sweep.csv")
+        if not given_csv:
+            r = subprocess.run([os.path.join(build, "cardemo"), "compare-sweep", "--all-exact",
+                                "--pairs", pairs, "--seed", seed, "--csv", sweep_csv],
+                               stdout=subprocess.DEVNULL)
+            if r.returncode not in (0, 1):
+                sys.exit(f"compare-sweep failed with exit {r.returncode}")
         with open(sweep_csv, newline="") as f:
             rows = list(csv.DictReader(f))
 
