@@ -27,7 +27,7 @@ ENGINES = [  # bench engine, compare-sweep verdict, label, style
     ("box2d", "box2d", "Box2D b2CollidePolygons, skin 0", "s-"),
     ("box2d_overlap", "box2d_overlap", "Box2D b2TestOverlap, skin 0", "^--"),
 ]
-OFFSETS = ["0", "1000", "1e+05", "1e+07"]
+OFFSETS = ["0", "1000", "100000", "1e+07"]
 
 
 def main(argv):
