@@ -330,7 +330,9 @@ def run_line(r):
     ctx = r.context
     return (f"Run: {ctx.get('date', '?')}, load average at its start {ctx.get('load_avg', '?')}, "
             f"{ctx.get('compiler', '?')} {ctx.get('build_type', '?')} `{ctx.get('cxx_flags', '?')}` "
-            f"(from the benchmark's context); CPU time, the fastest of the repetitions.")
+            f"(from the benchmark's context); batch path {ctx.get('batch_path', '?')}, AVX-512 "
+            f"available: {ctx.get('avx512_available', '?')}; CPU time, the fastest of the "
+            f"repetitions.")
 
 
 def replace_sections(r, only):
