@@ -3,8 +3,12 @@
 
 Usage: scripts/box2d_tables.py [path/to/cardemo] [--pairs N] [--seed S]
 
-Runs `cardemo compare --json -` on every bundled replay (the 10,100-car lot in full) and
-`cardemo compare-sweep`, and prints markdown.
+Runs `cardemo compare --all-exact --json -` on every bundled replay (the 10,100-car lot in full)
+and `cardemo compare-sweep --all-exact`, and prints markdown. --all-exact: the GMP oracle judges
+every pair (no shortcut from cardemo's own separation). --skip NAME leaves a replay out;
+--radius NAME=R checks that replay's colliders within R m of the player only (`compare --radius`);
+--csv FILE also keeps the sweep's CSV (for scripts/plot_box2d_offsets.py and
+scripts/plot_cost_error.py --sweep-csv FILE, which then need not run the sweep again).
 """
 import glob
 import json
@@ -24,6 +28,7 @@ def hits_of(obj):
 def main(argv):
     binary = os.path.join(ROOT, "build", "cardemo")
     pairs, seed = "1000000", "1"
+    skip, radius, sweep_csv = set(), {}, None
     args = list(argv)
     while args:
         a = args.pop(0)
@@ -31,15 +36,26 @@ def main(argv):
             pairs = args.pop(0)
         elif a == "--seed":
             seed = args.pop(0)
+        elif a == "--skip":
+            skip.add(args.pop(0))
+        elif a == "--csv":
+            sweep_csv = args.pop(0)
+        elif a == "--radius":
+            name, r = args.pop(0).split("=")
+            radius[name] = r
         else:
             binary = a
-    print("## Bundled replays (`cardemo compare REPLAY --json -`)\n")
+    print("## Bundled replays (`cardemo compare REPLAY --all-exact --json -`)\n")
     print("Cells: disagree / borderline against the exact oracle; hits: first contacts implied "
           "(differing from the oracle's).\n")
     print("| replay | pairs | " + " | ".join(VERDICTS) + " | exact hits |")
     print("|---|---|" + "---|" * len(VERDICTS) + "---|")
     for replay in sorted(glob.glob(os.path.join(ROOT, "assets", "replays", "*.replay"))):
-        run = subprocess.run([binary, "compare", replay, "--json", "-"], capture_output=True,
+        if os.path.basename(replay) in skip:
+            continue
+        extra = ["--radius", radius[name]] if (name := os.path.basename(replay)) in radius else []
+        run = subprocess.run([binary, "compare", replay, "--all-exact", "--json", "-"] + extra,
+                             capture_output=True,
                              text=True, check=False)
         if run.returncode not in (0, 1):
             sys.exit(f"{replay}: cardemo compare exited {run.returncode}: {run.stderr}")
@@ -51,10 +67,13 @@ def main(argv):
             mine = hits_of(o["hits"])
             cells.append(f'{o["disagree"]} / {o["borderline"]}; hits {len(mine)} '
                          f'({len(mine ^ exact)})')
-        name = os.path.basename(replay)
+        if name in radius:
+            name += f" (`--radius {radius[name]}`)"
         print(f'| {name} | {j["pairs_checked"]} | ' + " | ".join(cells) + f" | {len(exact)} |")
-    print(f"\n## Random box pairs (`cardemo compare-sweep --pairs {pairs} --seed {seed}`)\n")
-    run = subprocess.run([binary, "compare-sweep", "--pairs", pairs, "--seed", seed],
+    print(f"\n## Random box pairs (`cardemo compare-sweep --all-exact --pairs {pairs} "
+          f"--seed {seed}`)\n")
+    run = subprocess.run([binary, "compare-sweep", "--all-exact", "--pairs", pairs, "--seed", seed]
+                         + (["--csv", sweep_csv] if sweep_csv else []),
                          capture_output=True, text=True, check=False)
     if run.returncode not in (0, 1):
         sys.exit(f"cardemo compare-sweep exited {run.returncode}: {run.stderr}")

@@ -9,7 +9,6 @@
 #include "geometry/aabb.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/obb3.hpp"
-#include "sim/input_frame.hpp"
 #include "sim/scene.hpp"
 
 namespace cardemo::bench {
@@ -36,7 +35,8 @@ struct PairSet3 {
 
 /// `n` 2D pairs, about 45% overlapping. Deterministic for a given n.
 [[nodiscard]] const PairSet2& pairSet2(std::size_t n);
-/// One query box and `n` boxes around it, about 45% of them overlapping it.
+/// One query box and `n` boxes around it, about 45% of them overlapping it; every tenth box is
+/// within 1e-5 m of touching it (either side).
 [[nodiscard]] const PairSet2& batchSet2(std::size_t n);
 /// `n` 3D pairs, about 45% overlapping.
 [[nodiscard]] const PairSet3& pairSet3(std::size_t n);
@@ -65,8 +65,5 @@ struct LotCar {
 [[nodiscard]] Scene lotScene(std::size_t n);
 /// The same scene as scene JSON text (cardemo-scene/1), ids like "00N-001".
 [[nodiscard]] std::string lotSceneJson(std::size_t n);
-/// A scripted drive of `frames` steps for lotScene: accelerate down the aisle, weave, brush the
-/// north row, brake, reverse; repeated as needed.
-[[nodiscard]] std::vector<InputFrame> lotDrive(std::size_t frames);
 
 }  // namespace cardemo::bench

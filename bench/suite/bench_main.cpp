@@ -5,10 +5,15 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "bench_registry.hpp"
 #include "geometry/batch_path.hpp"
+
+#if defined(CARDEMO_HAVE_COMPARE)
+#include <box2d/b2_common.h>
+#endif
 
 namespace cardemo::bench {
 
@@ -36,8 +41,14 @@ int main(int argc, char** argv) {
       "avx2_available", cardemo::batchPathAvailable(cardemo::BatchPath::kAvx2) ? "yes" : "no");
   benchmark::AddCustomContext(
       "avx512_available", cardemo::batchPathAvailable(cardemo::BatchPath::kAvx512) ? "yes" : "no");
+  benchmark::AddCustomContext("build_type", CARDEMO_BUILD_TYPE);
+  benchmark::AddCustomContext("cxx_flags", CARDEMO_CXX_FLAGS);
+  benchmark::AddCustomContext("compiler", CARDEMO_COMPILER);
 #if defined(CARDEMO_HAVE_COMPARE)
-  benchmark::AddCustomContext("box2d", "2.4.1 (Debian libbox2d), float, skin 0");
+  // b2_version is the linked library's own (b2_settings.cpp), not the header's.
+  benchmark::AddCustomContext(
+      "box2d", std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." +
+                   std::to_string(b2_version.revision) + ", float world transforms, skin 0");
 #else
   benchmark::AddCustomContext("box2d", "not built");
 #endif
@@ -45,6 +56,7 @@ int main(int argc, char** argv) {
   cardemo::bench::registerBatch(config);
   cardemo::bench::registerBroad(config);
   cardemo::bench::registerStep(config);
+  cardemo::bench::registerOffset(config);
   cardemo::bench::registerLoad(config);
   benchmark::Initialize(&count, args.data());
   if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;

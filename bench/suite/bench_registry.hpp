@@ -19,6 +19,8 @@ void registerBatch(const BenchConfig& config);
 void registerBroad(const BenchConfig& config);
 /// Whole step: World::step and b2World::Step with one car among N parked cars.
 void registerStep(const BenchConfig& config);
+/// Cost per pair at 0, 1e3, 1e5 and 1e7 m from the origin, cardemo and Box2D.
+void registerOffset(const BenchConfig& config);
 /// Loading a large scene, and headless replay speed on the bundled lot.
 void registerLoad(const BenchConfig& config);
 

@@ -56,9 +56,11 @@ void addCompareSweepCommand(CLI::App& app, int& exit_code) {
   sub->callback([options, csv_path, &exit_code] {
     const compare::SweepReport report = compare::runSweep(*options);
     std::printf(
-        "pairs %lld, seed %llu, GMP oracle on %lld%s\n", static_cast<long long>(report.pairs),
-        static_cast<unsigned long long>(options->seed), static_cast<long long>(report.gmp_calls),
-        options->all_exact ? " (--all-exact)" : "");
+        "pairs %lld, seed %llu, GMP oracle on %lld%s; largest |cardemo - exact| "
+        "separation over those: %.3g m\n",
+        static_cast<long long>(report.pairs), static_cast<unsigned long long>(options->seed),
+        static_cast<long long>(report.gmp_calls),
+        options->all_exact ? " (--all-exact: every pair)" : "", report.max_separation_error);
     std::fputs(compare::sweepTables(report).c_str(), stdout);
     std::int64_t ours = 0;
     for (const auto& row : report.cells)

@@ -16,7 +16,7 @@ inline constexpr std::array<double, 5> kSweepGapEdges{1e-6, 1e-4, 1e-2, 1e-1, 1.
 
 /// Options of a sweep.
 struct SweepOptions {
-  std::int64_t pairs = 1'000'000;  ///< Pairs in all, spread evenly over offsets and gap bins.
+  std::int64_t pairs = 1'000'000;  ///< Pairs in all, aimed evenly at the offsets and gap bins.
   std::uint64_t seed = 1;          ///< std::mt19937_64 seed.
   bool all_exact = false;          ///< Run the GMP oracle on every pair.
 };
@@ -33,6 +33,8 @@ struct SweepReport {
   std::array<std::array<SweepCell, kSweepGapEdges.size()>, kSweepOffsets.size()> cells{};
   std::int64_t pairs = 0;      ///< Pairs generated.
   std::int64_t gmp_calls = 0;  ///< Pairs that needed the GMP oracle.
+  /// Largest |cardemo's separation - exact separation| over the pairs the GMP oracle judged, m.
+  double max_separation_error = 0.0;
 };
 
 /// Runs the sweep: for each pair a random box A (0.1 to 20 m sides, any heading, a quarter of
@@ -40,7 +42,8 @@ struct SweepReport {
 /// moved along the SAT normal to a target signed gap, log-uniform inside a gap bin.
 [[nodiscard]] SweepReport runSweep(const SweepOptions& options);
 
-/// Markdown tables of disagreement counts (disagree + borderline) per verdict.
+/// Markdown tables per verdict: disagree (outside the contract's |sep| <= 1e-6 m band) and
+/// borderline (inside it) counts, apart, per offset and gap bin.
 [[nodiscard]] std::string sweepTables(const SweepReport& report);
 
 }  // namespace cardemo::compare

@@ -39,6 +39,7 @@ PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const Sta
   PairVerdicts out;
   const double ours = collidePlayer(player, shape).separation;
   out.hit[static_cast<int>(Verdict::kOurs)] = ours <= 0.0;
+  out.ours_separation = ours;
   if (!all_exact && std::abs(ours) > kExactShortcut) {
     out.exact_separation = ours;
     out.hit[static_cast<int>(Verdict::kExact)] = ours <= 0.0;

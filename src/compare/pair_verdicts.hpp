@@ -46,6 +46,7 @@ struct Box2dPair {
 struct PairVerdicts {
   std::array<bool, kVerdictCount> hit{};  ///< Indexed by Verdict.
   double exact_separation = 0.0;          ///< Exact (or shortcut double) separation, metres.
+  double ours_separation = 0.0;           ///< cardemo's double separation, metres.
   bool used_gmp = false;                  ///< True when the GMP oracle ran.
 };
 

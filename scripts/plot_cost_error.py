@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""Draws docs/img/cost-vs-error.png: cost per pair against misclassification rate, cardemo and
+Box2D on one plot, one point per world offset (0, 1e3, 1e5, 1e7 m).
+
+Usage: scripts/plot_cost_error.py [BUILD] [--pairs N] [--seed S] [--repetitions R] [--out FILE]
+                                  [--sweep-csv FILE]   (a saved `compare-sweep --all-exact --csv`)
+
+Runs, from BUILD (default build/):
+  bench/cardemo_bench --benchmark_filter='^offset/' --benchmark_repetitions=R (cost: CPU ns per
+      pair, the fastest repetition; 1k random car pairs, 45 % overlapping, moved to the offset);
+  cardemo compare-sweep --all-exact --pairs N --seed S --csv FILE (error: pairs whose verdict
+      differs from the GMP oracle outside the contract's |sep| <= 1e-6 m band, over all pairs at
+      the offset; pairs drawn in equal numbers per |gap| bin 1e-9..1e-6..1e-4..1e-2..0.1..1 m).
+Prints the numbers it plots, as a markdown table.
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+ENGINES = [  # bench engine, compare-sweep verdict, label, style
+    ("cardemo", "ours", "cardemo collideObb2 (double)", "o-"),
+    ("box2d", "box2d", "Box2D b2CollidePolygons, skin 0", "s-"),
+    ("box2d_overlap", "box2d_overlap", "Box2D b2TestOverlap, skin 0", "^--"),
+]
+OFFSETS = ["0", "1000", "100000", "1e+07"]
+
+
+def main(argv):
+    build = os.path.join(ROOT, "build")
+    pairs, seed, reps = "1000000", "1", "5"
+    out = os.path.join(ROOT, "docs", "img", "cost-vs-error.png")
+    given_csv = None
+    args = list(argv)
+    while args:
+        a = args.pop(0)
+        if a == "--pairs":
+            pairs = args.pop(0)
+        elif a == "--seed":
+            seed = args.pop(0)
+        elif a == "--repetitions":
+            reps = args.pop(0)
+        elif a == "--sweep-csv":
+            given_csv = args.pop(0)
+        elif a == "--out":
+            out = args.pop(0)
+        else:
+            build = a
+    subprocess.run([os.path.join(HERE, "ensure-packages.sh"), "python3-matplotlib"], check=True)
+    try:
+        import matplotlib
+    except ImportError:
+        if sys.executable != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + argv)
+        raise
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    with tempfile.TemporaryDirectory() as tmp:
+        bench_json = os.path.join(tmp, "offset.json")
+        subprocess.run([os.path.join(build, "bench", "cardemo_bench"), "--benchmark_filter=^offset/",
+                        f"--benchmark_repetitions={reps}", "--benchmark_min_time=0.2",
+                        f"--benchmark_out={bench_json}", "--benchmark_out_format=json"],
+                       check=True, stdout=subprocess.DEVNULL)
+        with open(bench_json) as f:
+            data = json.load(f)
+        sweep_csv = given_csv or os.path.join(tmp, "sweep.csv")
+        if not given_csv:
+            r = subprocess.run([os.path.join(build, "cardemo"), "compare-sweep", "--all-exact",
+                                "--pairs", pairs, "--seed", seed, "--csv", sweep_csv],
+                               stdout=subprocess.DEVNULL)
+            if r.returncode not in (0, 1):
+                sys.exit(f"compare-sweep failed with exit {r.returncode}")
+        with open(sweep_csv, newline="") as f:
+            rows = list(csv.DictReader(f))
+
+    cost = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" or b.get("error_occurred"):
+            continue
+        _, _, offset, engine = b["run_name"].split("/")[:4]
+        ns = 1e9 / b["items_per_second"]
+        cost[(engine, offset)] = min(ns, cost.get((engine, offset), ns))
+    error = {}
+    for verdict in {e[1] for e in ENGINES}:
+        for offset in OFFSETS:
+            cells = [x for x in rows if x["verdict"] == verdict and float(x["offset_m"]) == float(offset)]
+            n = sum(int(x["pairs"]) for x in cells)
+            error[(verdict, offset)] = 100.0 * sum(int(x["disagree"]) for x in cells) / n
+
+    print("| engine | " + " | ".join(f"{o} m: ns, misclassified" for o in OFFSETS) + " |")
+    print("|---|" + "---|" * len(OFFSETS))
+    fig, ax = plt.subplots(figsize=(7.5, 4.5), dpi=120)
+    for engine, verdict, label, style in ENGINES:
+        xs = [error[(verdict, o)] for o in OFFSETS]
+        ys = [cost[(engine, o)] for o in OFFSETS]
+        print(f"| {label} | " + " | ".join(f"{y:.1f} ns, {x:.2f} %" for x, y in zip(xs, ys)) + " |")
+        ax.plot(xs, ys, style, label=label)
+        for x, y, o in zip(xs, ys, OFFSETS):
+            ax.annotate("0 m" if o == "0" else f"{float(o):.0e} m".replace("+0", ""), (x, y),
+                        textcoords="offset points", xytext=(4, 4), fontsize=7)
+    ax.set_xscale("symlog", linthresh=0.1)
+    ax.set_xlim(left=-0.02)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("misclassified pairs, % (verdict differs from the GMP oracle, |sep| > 1e-6 m)")
+    ax.set_ylabel("CPU ns per pair (fastest of the repetitions)")
+    ax.set_title(f"Cost against error at 0 to 1e7 m from the origin ({int(pairs):,} sweep pairs)",
+                 fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    fig.savefig(out)
+    print(out)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
