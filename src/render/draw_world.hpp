@@ -38,6 +38,8 @@ struct DrawOptions {
   bool sprites = false;
   /// Rows of the GAME OVER panel in place of its default ones (a level's run summary).
   std::vector<std::pair<std::string, std::string>> game_over_rows;
+  /// Keys line of the GAME OVER panel (the keys that work now); empty: "Enter restart    Esc quit".
+  std::string game_over_keys;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).

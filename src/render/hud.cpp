@@ -153,12 +153,13 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
 }
 
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
-                  const std::vector<std::pair<std::string, std::string>>& summary_rows) {
+                  const std::vector<std::pair<std::string, std::string>>& summary_rows,
+                  const std::string& keys) {
   EndPanel panel{"GAME OVER",
                  {255, 90, 80, 255},
                  {60, 10, 12, 215},
                  summary_rows,
-                 "Enter restart    Esc quit"};
+                 keys.empty() ? std::string("Enter restart    Esc quit") : keys};
   if (panel.rows.empty()) {
     panel.rows = {
         {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
@@ -172,10 +173,10 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   static const std::vector<std::pair<std::string, std::string>> keys{
       {"Up / Down, W / S", "throttle / brake, then reverse"},
       {"Left / Right, A / D", "steer"},
-      {"Space", "handbrake; after the game ends: restart"},
-      {"Enter", "restart after the game ends"},
+      {"Space", "handbrake; after the run ends: retry"},
+      {"Enter", "retry after the run ends (PARKED, TIME UP, GAME OVER)"},
       {"P", "pause / resume"},
-      {"N", "step one frame while paused"},
+      {"N", "step one frame while paused; once parked: next level"},
       {"R", "restart"},
       {"B", "debug overlay (AABB, OBBs, candidates, contacts)"},
       {"+ / -", "zoom in / out"},
@@ -184,7 +185,7 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
       {"F11", "full screen"},
       {"F12", "save a PNG screenshot"},
       {"F1", "this help (the game waits)"},
-      {"Esc", "quit"},
+      {"Esc", "back to the level list (when started from it), else quit"},
   };
   return keys;
 }
