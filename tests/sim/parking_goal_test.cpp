@@ -269,17 +269,21 @@ TEST(ParkingChallenge, ABrokenHoldStartsAgain) {
   Scene scene = driveInScene();
   scene.goal->bay.center = {0.0, 0.0};
   int frame = 0;
-  // 30 frames at rest in the bay, a short push (faster than max_speed), then braking to a stop.
-  const auto drive = [&frame](const World& world) {
+  bool broken = false;
+  // 30 frames at rest in the bay, a push of 30 frames (faster than max_speed), then braking to a
+  // stop.
+  const auto drive = [&](const World& world) {
     ++frame;
+    broken = broken || std::abs(world.car().speed) > scene.goal->max_speed;
     InputFrame in;
-    in.up = frame > 30 && frame <= 36;
-    in.down = frame > 36 && world.car().speed > 0.0;
+    in.up = frame > 30 && frame <= 60;
+    in.down = frame > 60 && world.car().speed > 0.0;
     return in;
   };
   std::int64_t parked = 0;
   expectParksAfterTheHold(scene, drive, 2400, &parked);
-  EXPECT_GT(parked, 96);  // not at 60: the hold restarted after the push
+  EXPECT_TRUE(broken) << "the push never broke the hold: the test shows nothing";
+  EXPECT_GT(parked, 120);  // not at 60: the hold restarted after the push
 }
 
 TEST(ParkingChallenge, TimeLimitEndsTheRunAtItsFrame) {
