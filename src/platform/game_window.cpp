@@ -427,6 +427,7 @@ GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
     s.draw.fps = fps;
     s.draw.playback_speed = session.playingBack() && !ended() ? flow.chosenSpeed() : 0.0;
     s.draw.status = statusLine(session, options, note, ended());
+    s.draw.run_over = ended();
     s.draw.game_over_keys = endPanelKeys(options.links, false);
     s.draw.effects = &effects;
     s.draw.sprites = true;

@@ -30,6 +30,9 @@ struct DrawOptions {
   double fps = 0.0;
   /// Replay speed shown in the HUD while playing a replay (0 hides it).
   double playback_speed = 0.0;
+  /// The run has ended (GAME OVER, PARKED, TIME UP): the HUD's speed reads "stopped", not the
+  /// frozen World's last speed, since nothing drives any more.
+  bool run_over = false;
   /// Extra one-line status (e.g. "recording to drive.replay").
   std::string status;
   /// Hit feedback, tyre marks, brake lights and dents to draw (none when null).

@@ -111,7 +111,10 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   const float pad = 10.0f * s;
   const int h = px(16, s);
   std::vector<HudRow> rows;
-  rows.push_back({"Speed", format("%.0f km/h", std::abs(world.car().speed) * 3.6), kText});
+  rows.push_back({"Speed",
+                  options.run_over ? std::string("stopped")
+                                   : format("%.0f km/h", std::abs(world.car().speed) * 3.6),
+                  kText});
   rows.push_back({"Hits", std::to_string(world.hits().size()), kText});
   rows.push_back({"Frame", std::to_string(world.frame()), kDim});
   if (options.fps > 0.0) rows.push_back({"FPS", format("%.0f", options.fps), kDim});

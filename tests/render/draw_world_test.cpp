@@ -339,6 +339,19 @@ TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
   }
 }
 
+TEST(Hud, SpeedReadsStoppedOnceTheRunIsOver) {
+  Scene scene = sceneWith({});
+  scene.player.speed = 5.0;
+  World world(std::move(scene));
+  Camera camera;
+  EXPECT_TRUE(drawn(world, camera).hasText("18 km/h"));
+  DrawOptions options;
+  options.run_over = true;
+  const RecordingCanvas canvas = drawn(world, camera, options);
+  EXPECT_TRUE(canvas.hasText("stopped"));
+  EXPECT_FALSE(canvas.hasText("18 km/h"));
+}
+
 TEST(Hud, GameOverPanelAtZeroHealth) {
   Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
   scene.player.health = 1;
