@@ -126,6 +126,10 @@ def build(lv):
     out=subprocess.run([CARDEMO,'replay',rp,'--print-expect'],capture_output=True,text=True)
     exp=[l for l in out.stdout.splitlines() if l.startswith('expect')]
     print(out.stdout + out.stderr)
+    # The tail of stopped frames must outlast the goal's hold time (0.5 s by default), or the
+    # replay never parks.
+    if 'expect parked never' in exp:
+        sys.exit('make_levels: %s never parks; lengthen its tail of stopped frames' % rp)
     open(rp,'w').write(body+'# Expectations (regenerate with: cardemo replay THIS --print-expect)\n'+'\n'.join(exp)+'\n')
 
 def make1(S,B):

@@ -60,26 +60,21 @@ std::string findSounds() {
   return {};
 }
 
-// Without SCENE or --replay: the picker lists the levels and the free-drive lot. Empty when the
-// player quits it; `status` says whether that is an error.
-std::string pickScene(int& status) {
-  status = 0;
+// Without SCENE or --replay: the picker lists the levels and the free-drive lot, and opens them in
+// one window (Esc in a level returns to it). `window` holds everything but the scene.
+int pickAndPlay(const GameWindowOptions& window) {
   const std::string assets = findAssetsFolder();
   if (assets.empty()) {
     std::fprintf(stderr,
                  "cardemo play: cannot find the bundled %s next to the executable; give SCENE "
                  "or set CARDEMO_ASSETS to the assets folder\n",
                  kDefaultScene);
-    status = 2;
-    return {};
+    return 2;
   }
   std::vector<std::string> warnings;
   const std::vector<LevelEntry> entries = listLevels(assets, warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
-  std::string warning;
-  const BestScores best = loadBestScores(bestScoresPath(), warning);
-  if (!warning.empty()) std::fprintf(stderr, "%s\n", warning.c_str());
-  return runScenePicker(entries, best, status).value_or(std::string());
+  return runPickerAndLevels(entries, window, bestScoresPath());
 }
 
 int runPlayCommand(const PlayOptions& options) {
@@ -130,11 +125,7 @@ int runPlayCommand(const PlayOptions& options) {
     session.settings = settingsForReplay(replay.value());
     session.playback = std::move(replay).value().runs;
   }
-  if (scene_path.empty()) {
-    int status = 0;
-    scene_path = pickScene(status);
-    if (scene_path.empty()) return status;
-  }
+  if (scene_path.empty()) return pickAndPlay(window);
   Parsed<Scene> scene = replay_scene ? std::move(*replay_scene) : loadScene(scene_path);
   if (!scene.ok()) {
     std::fprintf(stderr, "%s\n", scene.error().toString().c_str());

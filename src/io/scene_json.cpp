@@ -23,6 +23,7 @@ constexpr double kMaxCarSize = 1e4;
 constexpr double kMaxSpeed = 1000.0;
 constexpr double kMaxHealth = 1e6;
 constexpr double kMaxGoalTime = 1e5;
+constexpr double kMaxHoldTime = 60.0;
 constexpr double kMaxLevelOrder = 1e4;
 constexpr std::size_t kMaxTitleBytes = 64;
 constexpr double kMaxMarkingWidth = 10.0;
@@ -314,7 +315,7 @@ class SceneReader {
     if (!isKind(n, Kind::kObject, path) ||
         !onlyKeys(n,
                   {"bay", "position_tolerance", "heading_tolerance_deg", "either_direction",
-                   "max_speed", "par_time", "time_limit"},
+                   "max_speed", "hold_time", "par_time", "time_limit"},
                   path)) {
       return false;
     }
@@ -346,6 +347,16 @@ class SceneReader {
     }
     if (goal.par_time && goal.time_limit && *goal.par_time > *goal.time_limit) {
       return fail(n.find("par_time")->line, "goal.par_time: must not exceed goal.time_limit");
+    }
+    if (const Node* h = n.find("hold_time")) {
+      if (!isKind(*h, Kind::kNumber, "goal.hold_time")) return false;
+      if (!std::isfinite(h->number) || !(h->number >= 0.0) || h->number > kMaxHoldTime) {
+        return fail(h->line, "goal.hold_time: must be finite, >= 0 and at most 60 s");
+      }
+      goal.hold_time = h->number;
+      if (goal.time_limit && goal.hold_time >= *goal.time_limit) {
+        return fail(h->line, "goal.hold_time: must be less than goal.time_limit");
+      }
     }
     return true;
   }

@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,7 +16,9 @@
 #include "platform/game_controller.hpp"
 #include "platform/png_save.hpp"
 #include "platform/sdl_canvas.hpp"
+#include "platform/sdl_window.hpp"
 #include "platform/sprite_path.hpp"
+#include "platform/stop_signal.hpp"
 #include "play/analog_drive.hpp"
 #include "play/fixed_step_clock.hpp"
 #include "play/input_latch.hpp"
@@ -32,27 +33,6 @@
 namespace cardemo {
 namespace {
 
-volatile std::sig_atomic_t g_stop_signal = 0;
-
-extern "C" void onStopSignal(int sig) {
-  g_stop_signal = sig;
-}
-
-// SIGINT, SIGTERM and SIGHUP (terminal closed) only set a flag; the loop then exits normally,
-// finishes the recording and writes the summary. SA_RESETHAND: a second signal of the same kind
-// kills at once, which loses at most the last second of the recording (it is flushed every
-// second). A full disk or a file-size limit must be an error on write, not SIGXFSZ; a closed
-// standard output (--progress into a pipe) must not kill the game with SIGPIPE.
-void installSignalHandlers() {
-  struct sigaction action {};
-  action.sa_handler = onStopSignal;
-  action.sa_flags = SA_RESETHAND;
-  sigemptyset(&action.sa_mask);
-  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
-  std::signal(SIGXFSZ, SIG_IGN);
-  std::signal(SIGPIPE, SIG_IGN);
-}
-
 // One line per simulated frame on standard output (--progress), written at once.
 void printFrame(std::int64_t frame) {
   char line[32];
@@ -63,11 +43,6 @@ void printFrame(std::int64_t frame) {
 constexpr int kMaxStepsPerFrame = 8;
 // The +/- keys scale the camera rig's zoom by zoom / kDefaultZoom.
 constexpr double kDefaultZoom = 12.0, kMinZoom = 2.0, kMaxZoom = 80.0;
-
-struct SdlDeleter {
-  void operator()(SDL_Window* w) const { SDL_DestroyWindow(w); }
-  void operator()(SDL_Renderer* r) const { SDL_DestroyRenderer(r); }
-};
 
 // Arrows, and WASD by position (scancode), so the same physical keys drive on any layout; Space
 // is the handbrake.
@@ -130,7 +105,9 @@ std::string saveScreenshot(SDL_Renderer* renderer) {
 
 // Mutable state of the running window (everything but the session and the flow).
 struct LoopState {
-  bool quit = false;
+  bool quit = false;    // window closed: end the program
+  bool escape = false;  // Esc: back to the picker, or quit
+  bool next = false;    // N: the next level once parked, else one step while paused
   bool restart = false;
   bool confirm = false;  // Enter, Space or the pad's A: restart once the game has ended
   bool screenshot = false;
@@ -168,7 +145,7 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, PlayFlow& flow, I
   if (key.repeat != 0) return;  // toggles act once per press
   switch (key.keysym.sym) {
     case SDLK_ESCAPE:
-      s.quit = true;
+      s.escape = true;
       break;
     case SDLK_RETURN:
     case SDLK_KP_ENTER:
@@ -178,7 +155,7 @@ void handleKeyDown(const SDL_KeyboardEvent& key, LoopState& s, PlayFlow& flow, I
       flow.togglePause();
       break;
     case SDLK_n:
-      flow.stepOnce();
+      s.next = true;
       break;
     case SDLK_r:
       s.restart = true;
@@ -268,9 +245,15 @@ int writeSummary(const std::string& path, const World& world, const LevelRun& le
   return 0;
 }
 
+// Once the run has ended nothing is replayed or recorded any more: the line says where the
+// recording was saved instead.
 std::string statusLine(const GameSession& session, const GameWindowOptions& options,
-                       const std::string& note) {
+                       const std::string& note, bool ended) {
   std::string status = note;
+  if (ended && !session.recordPath().empty() && session.recordError().empty()) {
+    status += (status.empty() ? "" : "  ") + std::string("recorded to ") + session.recordPath();
+  }
+  if (ended) return status;
   if (session.playingBack()) {
     status += (status.empty() ? "" : "  ") + std::string("replaying ") + options.replay_path +
               " (" + std::to_string(session.playbackLeft()) + " frames left)";
@@ -290,12 +273,21 @@ int reportRecordError(const GameSession& session, bool& reported, std::string& n
   return 2;
 }
 
-int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions& options) {
+}  // namespace
+
+GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
+  SDL_Window* window = sdl.window();
+  SDL_Renderer* renderer = sdl.renderer();
+  installStopSignals();
+  sdl.setTitle(windowTitle(options.session.scene.name));
+  GameOutcome outcome;
   const std::string json_path = options.json_path;
   GameSession session(options.session);
+  outcome.last_attempt = session.attempt();
   if (!session.recordError().empty()) {
     std::fprintf(stderr, "%s\n", session.recordError().c_str());
-    return 2;
+    outcome.status = 2;
+    return outcome;
   }
   SdlCanvas canvas(renderer);
   std::string sprite_error;
@@ -321,6 +313,7 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     std::fprintf(stderr, "cardemo play: %s\n", audio.message().c_str());
   }
   LoopState s;
+  s.fullscreen = (SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
   std::string note;
   bool over_reported = false;
   bool record_error_reported = false;
@@ -328,14 +321,31 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
   Uint64 last = SDL_GetPerformanceCounter();
   const double ticks_per_second = static_cast<double>(SDL_GetPerformanceFrequency());
   double fps = 0.0;
+  std::int64_t drawn_frames = 0;
 
-  while (!s.quit && g_stop_signal == 0) {
+  while (!s.quit && stopSignal() == 0) {
     pollEvents(s, flow, in, window);
     if (s.quit) break;
+    if (s.escape) {
+      outcome.exit = escapeExit(options.links);
+      break;
+    }
+    if (s.next) {
+      s.next = false;
+      const bool parked = level.challenge() != nullptr && level.challenge()->parkedFrame();
+      if (flow.next(parked, options.links) == LevelExit::kNextLevel) {
+        outcome.exit = LevelExit::kNextLevel;
+        break;
+      }
+    }
     const Uint64 now = SDL_GetPerformanceCounter();
     const double elapsed = static_cast<double>(now - last) / ticks_per_second;
     last = now;
-    if (elapsed > 0.0) fps = fps == 0.0 ? 1.0 / elapsed : 0.95 * fps + 0.05 / elapsed;
+    // The first pass measures no drawn frame (a few microseconds after start-up): skip it, or a
+    // game opened from the picker starts with an FPS in the tens of thousands.
+    if (elapsed > 0.0 && drawn_frames++ > 0) {
+      fps = fps == 0.0 ? 1.0 / elapsed : 0.95 * fps + 0.05 / elapsed;
+    }
 
     // GAME OVER, or a level's PARKED / TIME UP: Enter or Space starts the next attempt.
     const auto ended = [&] { return session.ended() || level.over(); };
@@ -385,6 +395,8 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
       if (level.observe(session.world()) && level.over()) {
         status = std::max(status, writeSummary(json_path, session.world(), level));
         if (level.challenge()->parkedFrame()) audio.playChime();
+        // Nothing more is simulated: publish this attempt's recording now, as GAME OVER does.
+        (void)session.finishRecording();
       }
       if (options.progress) printFrame(session.world().frame());
       // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
@@ -401,25 +413,30 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
       status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
 
-    audio.apply(sound.update(session.world(), last_input, flow.holding()));
+    // Once the run is over the engine idles: no throttle from a key still held at the end.
+    audio.apply(sound.update(session.world(), ended() ? InputFrame{} : last_input, flow.holding()));
 
     const bool frozen = flow.holding() || session.world().gameOver() || level.over();
     const Obb2 box = session.blendedBox(frozen ? 1.0 : clock.alpha());
     int w = 0, h = 0;
     SDL_GetRendererOutputSize(renderer, &w, &h);
-    s.draw.paused = flow.paused() || flow.help();
+    // After the end nothing runs anyway: the end panel, not PAUSED, says what is going on.
+    s.draw.paused = (flow.paused() && !ended()) || flow.help();
     s.draw.help = flow.help();
     s.draw.banner = flow.yourTurn() ? "YOUR TURN: drive to take over" : "";
     s.draw.fps = fps;
-    s.draw.playback_speed = session.playingBack() ? flow.chosenSpeed() : 0.0;
-    s.draw.status = statusLine(session, options, note);
+    s.draw.playback_speed = session.playingBack() && !ended() ? flow.chosenSpeed() : 0.0;
+    s.draw.status = statusLine(session, options, note, ended());
+    s.draw.run_over = ended();
+    s.draw.game_over_keys = endPanelKeys(options.links, false);
     s.draw.effects = &effects;
     s.draw.sprites = true;
     const Camera camera =
         rig.camera({w, h}, frozen ? 1.0 : clock.alpha(), s.zoom / kDefaultZoom, effects.shake());
     GoalView goal_view;
     if (level.challenge() != nullptr) {
-      goal_view = {level.challenge(), level.best(), level.newBest()};
+      goal_view = {level.challenge(), level.best(), level.newBest(),
+                   endPanelKeys(options.links, level.challenge()->parkedFrame().has_value())};
       s.draw.game_over_rows = runSummaryRows(session.world(), goal_view);
     }
     drawFrame(canvas, session.world(), camera, box, s.draw);
@@ -440,10 +457,10 @@ int runLoop(SDL_Window* window, SDL_Renderer* renderer, const GameWindowOptions&
     if (!record_error_reported) std::fprintf(stderr, "%s\n", why.c_str());
     status = 2;
   }
-  return std::max(status, writeSummary(json_path, session.world(), level));
+  outcome.last_attempt = session.attempt();
+  outcome.status = std::max(status, writeSummary(json_path, session.world(), level));
+  return outcome;
 }
-
-}  // namespace
 
 bool displayAvailable() {
   const char* x11 = std::getenv("DISPLAY");
@@ -455,45 +472,18 @@ bool displayAvailable() {
 }
 
 int runGameWindow(const GameWindowOptions& options) {
-  // Our own handlers finish the recording; SDL's would only post SDL_QUIT.
-  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-  if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-    std::fprintf(stderr,
-                 "cardemo play: cannot open a display (%s); use `cardemo render` for pictures or "
-                 "`cardemo replay` for headless runs.\n",
-                 SDL_GetError());
-    return 1;
-  }
-  // A controller is optional: without the subsystem the game simply has none.
-  (void)SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER);
-  installSignalHandlers();
-  const std::string title = "cardemo \xE2\x80\x94 " + options.session.scene.name;
-  std::unique_ptr<SDL_Window, SdlDeleter> window(
-      SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, 1280, 720,
-                       SDL_WINDOW_RESIZABLE));
+  std::string error;
+  const std::unique_ptr<SdlWindow> window =
+      SdlWindow::open(windowTitle(options.session.scene.name), error);
   if (!window) {
     std::fprintf(stderr,
-                 "cardemo play: cannot open a window (%s); use `cardemo render` or "
-                 "`cardemo replay` instead.\n",
-                 SDL_GetError());
-    SDL_Quit();
+                 "cardemo play: %s; use `cardemo render` for pictures or `cardemo replay` for "
+                 "headless runs.\n",
+                 error.c_str());
     return 1;
   }
-  std::unique_ptr<SDL_Renderer, SdlDeleter> renderer(
-      SDL_CreateRenderer(window.get(), -1, SDL_RENDERER_PRESENTVSYNC));
-  if (!renderer) renderer.reset(SDL_CreateRenderer(window.get(), -1, SDL_RENDERER_SOFTWARE));
-  if (!renderer) {
-    std::fprintf(stderr, "cardemo play: cannot create a renderer: %s\n", SDL_GetError());
-    window.reset();
-    SDL_Quit();
-    return 1;
-  }
-  int status = runLoop(window.get(), renderer.get(), options);
-  renderer.reset();
-  window.reset();
-  SDL_Quit();
-  if (g_stop_signal != 0)
-    std::fprintf(stderr, "cardemo play: stopped by signal %d\n", g_stop_signal);
+  const int status = runGame(*window, options).status;
+  if (stopSignal() != 0) std::fprintf(stderr, "cardemo play: stopped by signal %d\n", stopSignal());
   return status;
 }
 

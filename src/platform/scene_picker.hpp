@@ -1,19 +1,31 @@
 #pragma once
-/// The scene picker window of `cardemo play` without SCENE. This header is SDL-free.
+/// The scene picker of `cardemo play` without SCENE, and the levels it opens, in one window. This
+/// header is SDL-free.
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "platform/game_window.hpp"
 #include "play/best_scores.hpp"
 #include "play/level_list.hpp"
 
 namespace cardemo {
 
-/// Opens a window listing `entries` (with their best scores) and returns the path chosen with
-/// Enter (SDL is left initialised for the game window), or nullopt on Esc or window close. `status`
-/// is 1 when no window could be opened (the message is on stderr), else 0.
-[[nodiscard]] std::optional<std::string> runScenePicker(const std::vector<LevelEntry>& entries,
-                                                        const BestScores& best, int& status);
+class SdlWindow;
+
+/// Shows the picker in `window`: `entries` with their `best` scores, row `selected` highlighted.
+/// Returns the row chosen with Enter, or nullopt on Esc, window close or a stop signal.
+[[nodiscard]] std::optional<int> runScenePicker(SdlWindow& window,
+                                                const std::vector<LevelEntry>& entries,
+                                                const BestScores& best, int selected);
+
+/// The picker, then the level chosen, then the picker again (Esc in a level) or the next level (N
+/// once parked), all in one window, until Esc in the picker, window close or a stop signal.
+/// `base` is each game's options but the scene; the best scores are read from `best_path` each
+/// time the picker opens, and attempts are numbered across games so that --record keeps each one.
+/// Returns the exit status as runGameWindow() does.
+[[nodiscard]] int runPickerAndLevels(const std::vector<LevelEntry>& entries,
+                                     const GameWindowOptions& base, const std::string& best_path);
 
 }  // namespace cardemo

@@ -1,11 +1,13 @@
 #include "play/game_session.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 namespace cardemo {
 
-GameSession::GameSession(SessionConfig config) : config_(std::move(config)) {
+GameSession::GameSession(SessionConfig config)
+    : config_(std::move(config)), attempt_(std::max(1, config_.first_attempt)) {
   if (config_.flush_every_frames <= 0) {
     config_.flush_every_frames = static_cast<std::int64_t>(std::ceil(config_.settings.hz));
   }

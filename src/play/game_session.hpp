@@ -23,6 +23,9 @@ struct SessionConfig {
   std::vector<InputRun> playback;       ///< Replay inputs played first (may be empty).
   std::string record_path;              ///< Where to record (empty: no recording).
   std::int64_t flush_every_frames = 0;  ///< Recording flush period; 0 means one second.
+  /// Number of the first attempt (its recording path): games started one after another from the
+  /// picker continue the count, so no attempt overwrites another's recording.
+  int first_attempt = 1;
 };
 
 /// The game's state machine: each step() takes the replay's input while it lasts, else the live
@@ -50,7 +53,7 @@ class GameSession {
   [[nodiscard]] bool playingBack() const { return run_ < config_.playback.size(); }
   /// Frames of replay input not yet played.
   [[nodiscard]] std::int64_t playbackLeft() const;
-  /// The attempt being played: 1 at the start, one more at each restart().
+  /// The attempt being played: first_attempt at the start, one more at each restart().
   [[nodiscard]] int attempt() const { return attempt_; }
   /// The file this attempt records to (empty when not recording).
   [[nodiscard]] const std::string& recordPath() const { return record_path_; }

@@ -39,6 +39,14 @@ std::vector<LevelEntry> listLevels(const std::string& assets_folder,
   return levels;
 }
 
+std::optional<std::size_t> nextLevel(const std::vector<LevelEntry>& entries, std::size_t current) {
+  if (current >= entries.size() || entries[current].free_drive) return std::nullopt;
+  for (std::size_t i = current + 1; i < entries.size(); ++i) {
+    if (!entries[i].free_drive) return i;
+  }
+  return std::nullopt;
+}
+
 int moveSelection(int selected, int delta, int count) {
   if (count <= 0) return 0;
   const int moved = (selected + delta) % count;

@@ -1,6 +1,8 @@
 #pragma once
 /// The scenes the picker of `cardemo play` offers: the bundled levels in order, then free drive.
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,11 @@ struct LevelEntry {
 /// A level file that does not load is left out with a one-line warning in `warnings`.
 [[nodiscard]] std::vector<LevelEntry> listLevels(const std::string& assets_folder,
                                                  std::vector<std::string>& warnings);
+
+/// The level after entry `current` (the next entry that is not free drive), or nullopt when
+/// `current` is the last level or free drive.
+[[nodiscard]] std::optional<std::size_t> nextLevel(const std::vector<LevelEntry>& entries,
+                                                   std::size_t current);
 
 /// `selected` moved by `delta` rows in a list of `count`, wrapping at both ends (0 when empty).
 [[nodiscard]] int moveSelection(int selected, int delta, int count);

@@ -4,6 +4,23 @@
 
 namespace cardemo {
 
+LevelExit escapeExit(const LevelLinks& links) {
+  return links.from_picker ? LevelExit::kPicker : LevelExit::kQuit;
+}
+
+std::string endPanelKeys(const LevelLinks& links, bool parked) {
+  std::string keys = "Enter retry";
+  if (parked && links.has_next) keys += "    N next level";
+  keys += links.from_picker ? "    Esc levels" : "    Esc quit";
+  return keys;
+}
+
+LevelExit PlayFlow::next(bool parked, const LevelLinks& links) {
+  if (parked) return links.has_next ? LevelExit::kNextLevel : LevelExit::kStay;
+  stepOnce();
+  return LevelExit::kStay;
+}
+
 void PlayFlow::faster() {
   speed_ = std::min(kMaxSpeed, speed_ * 2.0);
 }

@@ -1,8 +1,32 @@
 #pragma once
 /// The game's flow between the keys and the simulation: pause, help, the "your turn" hand-over
-/// after a replay, playback speed, and what Enter/Space mean. No window, no clock.
+/// after a replay, playback speed, and what Enter/Space, N and Esc mean. No window, no clock.
+
+#include <cstdint>
+#include <string>
 
 namespace cardemo {
+
+/// Where the player asked to go from a level.
+enum class LevelExit : std::uint8_t {
+  kStay,       ///< Nothing: keep playing this level.
+  kQuit,       ///< End the program.
+  kPicker,     ///< Back to the scene picker.
+  kNextLevel,  ///< On to the picker's next level.
+};
+
+/// What surrounds the level being played (set by whoever started it).
+struct LevelLinks {
+  bool from_picker = false;  ///< Started from the scene picker: Esc returns to it.
+  bool has_next = false;     ///< The picker has a level after this one: N opens it once parked.
+};
+
+/// Esc: back to the picker when the level came from it, else quit.
+[[nodiscard]] LevelExit escapeExit(const LevelLinks& links);
+
+/// The keys line of an end panel (PARKED when `parked`, else TIME UP or GAME OVER): retry, next
+/// level only when parked with a next level, and Esc's meaning.
+[[nodiscard]] std::string endPanelKeys(const LevelLinks& links, bool parked);
 
 /// Decides whether the simulation runs this frame, and what the flow keys do. The window feeds it
 /// key presses and the session's state; the session never sees it.
@@ -17,6 +41,9 @@ class PlayFlow {
   void toggleHelp() { help_ = !help_; }
   /// N: one step, only while paused by P (not behind the help or the "your turn" banner).
   void stepOnce() { step_once_ = paused_ && !help_ && !your_turn_; }
+  /// N with the level's state: once it is parked, the next level (kStay when there is none);
+  /// before that, stepOnce().
+  [[nodiscard]] LevelExit next(bool parked, const LevelLinks& links);
   /// ]: doubles the playback speed (up to kMaxSpeed).
   void faster();
   /// [: halves the playback speed (down to kMinSpeed).

@@ -17,7 +17,8 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
   if (options.effects != nullptr) drawDamageNumbers(canvas, camera, *options.effects, palette);
   drawHud(canvas, world, options);
   if (options.effects != nullptr) drawHealthPulse(canvas, world, *options.effects);
-  if (world.gameOver()) drawGameOver(canvas, world, camera, player_box, options.game_over_rows);
+  if (world.gameOver())
+    drawGameOver(canvas, world, camera, player_box, options.game_over_rows, options.game_over_keys);
   if (options.help) drawHelp(canvas);
 }
 

@@ -30,6 +30,9 @@ struct DrawOptions {
   double fps = 0.0;
   /// Replay speed shown in the HUD while playing a replay (0 hides it).
   double playback_speed = 0.0;
+  /// The run has ended (GAME OVER, PARKED, TIME UP): the HUD's speed reads "stopped", not the
+  /// frozen World's last speed, since nothing drives any more.
+  bool run_over = false;
   /// Extra one-line status (e.g. "recording to drive.replay").
   std::string status;
   /// Hit feedback, tyre marks, brake lights and dents to draw (none when null).
@@ -38,6 +41,8 @@ struct DrawOptions {
   bool sprites = false;
   /// Rows of the GAME OVER panel in place of its default ones (a level's run summary).
   std::vector<std::pair<std::string, std::string>> game_over_rows;
+  /// Keys line of the GAME OVER panel (the keys that work now); empty: "Enter restart    Esc quit".
+  std::string game_over_keys;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).

@@ -25,23 +25,14 @@ std::string scoreText(const ParkingScore& s) {
   return secondsText(s.seconds) + "  " + starsText(s.stars);
 }
 
-void drawTimer(Canvas& canvas, const ParkingChallenge& challenge, double distance) {
+void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const int big = static_cast<int>(std::lround(26.0f * s));
   const int small = static_cast<int>(std::lround(14.0f * s));
   const float pad = 10.0f * s;
-  const Goal& goal = challenge.goal();
   const std::string time = secondsText(challenge.seconds());
-  std::string detail;
-  if (goal.par_time) detail = "par " + secondsText(*goal.par_time);
-  if (goal.time_limit) {
-    const double left = std::max(0.0, *goal.time_limit - challenge.seconds());
-    detail += (detail.empty() ? "" : "   ") + std::string("left ") + secondsText(left);
-  }
-  char bay[48];
-  std::snprintf(bay, sizeof bay, "bay %.1f m", distance);
-  detail += (detail.empty() ? "" : "   ") + std::string(bay);
+  const std::string detail = timerDetail(challenge);
   const Eigen::Vector2f ts = canvas.textSize(time, big);
   const Eigen::Vector2f ds = canvas.textSize(detail, small);
   const float w = std::max(ts.x(), ds.x()) + 2.0f * pad;
@@ -53,6 +44,34 @@ void drawTimer(Canvas& canvas, const ParkingChallenge& challenge, double distanc
 }
 
 }  // namespace
+
+std::string timerDetail(const ParkingChallenge& challenge) {
+  const Goal& goal = challenge.goal();
+  std::string detail;
+  const auto add = [&detail](const std::string& part) {
+    detail += (detail.empty() ? "" : "   ") + part;
+  };
+  if (challenge.parkedFrame()) {
+    add("parked");
+    if (goal.par_time) add("par " + secondsText(*goal.par_time));
+    return detail;
+  }
+  if (challenge.timedOut()) return "time up";
+  if (challenge.wrecked()) return "wrecked";
+  if (goal.par_time) add("par " + secondsText(*goal.par_time));
+  if (goal.time_limit) {
+    add("left " + secondsText(std::max(0.0, *goal.time_limit - challenge.seconds())));
+  }
+  char text[64];
+  if (challenge.holdStart()) {
+    std::snprintf(text, sizeof text, "hold %.1f / %.1f s", challenge.heldSeconds(),
+                  challenge.holdSeconds());
+  } else {
+    std::snprintf(text, sizeof text, "bay %.1f m", challenge.lastCheck().distance);
+  }
+  add(text);
+  return detail;
+}
 
 std::string starsText(int stars) {
   std::string out;
@@ -118,7 +137,7 @@ void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
     fillRect(canvas, label - Eigen::Vector2f{4.0f, 2.0f}, ts + Eigen::Vector2f{8.0f, 4.0f}, kPanel);
     canvas.text(label, text, h, kTarget);
   }
-  drawTimer(canvas, c, c.lastCheck().distance);
+  drawTimer(canvas, c);
 
   if (c.parkedFrame()) {
     drawEndPanel(canvas, camera, player_box,
@@ -126,14 +145,14 @@ void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
                   kTargetReady,
                   {10, 40, 20, 215},
                   runSummaryRows(world, view),
-                  "Enter restart    Esc quit"});
+                  view.keys.empty() ? std::string("Enter restart    Esc quit") : view.keys});
   } else if (c.timedOut()) {
     drawEndPanel(canvas, camera, player_box,
                  {"TIME UP",
                   {255, 90, 80, 255},
                   {60, 10, 12, 215},
                   runSummaryRows(world, view),
-                  "Enter restart    Esc quit"});
+                  view.keys.empty() ? std::string("Enter restart    Esc quit") : view.keys});
   }
 }
 

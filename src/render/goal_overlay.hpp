@@ -20,6 +20,8 @@ struct GoalView {
   const ParkingChallenge* challenge = nullptr;  ///< The run's challenge (required).
   std::optional<ParkingScore> best;             ///< Best score before this run, if any.
   bool new_best = false;                        ///< This run's score was just saved as the best.
+  std::string
+      keys;  ///< Keys line of the PARKED / TIME UP panel; empty: "Enter restart    Esc quit".
 };
 
 /// Three stars, filled for the ones earned: "★★☆".
@@ -38,6 +40,10 @@ struct GoalView {
 [[nodiscard]] std::optional<Eigen::Vector2f> edgeAnchor(const Eigen::Vector2i& viewport,
                                                         const Eigen::Vector2f& target,
                                                         float margin);
+
+/// The line under the timer: par, time left and distance to the bay while driving; the hold
+/// while the car is in the bay; then what ended the run.
+[[nodiscard]] std::string timerDetail(const ParkingChallenge& challenge);
 
 /// Draws the bay outline, the off-screen arrow with the distance, the timer, and the end panel
 /// when the car has parked or the time is up.

@@ -111,7 +111,10 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   const float pad = 10.0f * s;
   const int h = px(16, s);
   std::vector<HudRow> rows;
-  rows.push_back({"Speed", format("%.0f km/h", std::abs(world.car().speed) * 3.6), kText});
+  rows.push_back({"Speed",
+                  options.run_over ? std::string("stopped")
+                                   : format("%.0f km/h", std::abs(world.car().speed) * 3.6),
+                  kText});
   rows.push_back({"Hits", std::to_string(world.hits().size()), kText});
   rows.push_back({"Frame", std::to_string(world.frame()), kDim});
   if (options.fps > 0.0) rows.push_back({"FPS", format("%.0f", options.fps), kDim});
@@ -153,12 +156,13 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
 }
 
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
-                  const std::vector<std::pair<std::string, std::string>>& summary_rows) {
+                  const std::vector<std::pair<std::string, std::string>>& summary_rows,
+                  const std::string& keys) {
   EndPanel panel{"GAME OVER",
                  {255, 90, 80, 255},
                  {60, 10, 12, 215},
                  summary_rows,
-                 "Enter restart    Esc quit"};
+                 keys.empty() ? std::string("Enter restart    Esc quit") : keys};
   if (panel.rows.empty()) {
     panel.rows = {
         {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
@@ -172,10 +176,10 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   static const std::vector<std::pair<std::string, std::string>> keys{
       {"Up / Down, W / S", "throttle / brake, then reverse"},
       {"Left / Right, A / D", "steer"},
-      {"Space", "handbrake; after the game ends: restart"},
-      {"Enter", "restart after the game ends"},
+      {"Space", "handbrake; after the run ends: retry"},
+      {"Enter", "retry after the run ends (PARKED, TIME UP, GAME OVER)"},
       {"P", "pause / resume"},
-      {"N", "step one frame while paused"},
+      {"N", "step one frame while paused; once parked: next level"},
       {"R", "restart"},
       {"B", "debug overlay (AABB, OBBs, candidates, contacts)"},
       {"+ / -", "zoom in / out"},
@@ -184,7 +188,7 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
       {"F11", "full screen"},
       {"F12", "save a PNG screenshot"},
       {"F1", "this help (the game waits)"},
-      {"Esc", "quit"},
+      {"Esc", "back to the level list (when started from it), else quit"},
   };
   return keys;
 }

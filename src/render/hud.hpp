@@ -49,9 +49,11 @@ float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
 void drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
 
 /// The game-over panel beside the car (never over it): time, hits and damage, or `summary_rows`
-/// when given (a level's run summary).
+/// when given (a level's run summary), and the keys line `keys` (default "Enter restart    Esc
+/// quit").
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
-                  const std::vector<std::pair<std::string, std::string>>& summary_rows = {});
+                  const std::vector<std::pair<std::string, std::string>>& summary_rows = {},
+                  const std::string& keys = {});
 
 /// Every key and what it does, as the help panel lists them.
 [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& helpKeys();

@@ -41,8 +41,16 @@ std::optional<std::int64_t> limitFrames(const Goal& goal, double hz) {
   return static_cast<std::int64_t>(std::ceil(*goal.time_limit * hz));
 }
 
+std::int64_t holdFrames(const Goal& goal, double hz) {
+  return static_cast<std::int64_t>(std::ceil(goal.hold_time * hz));
+}
+
 ParkingChallenge::ParkingChallenge(const Goal& goal, double hz, int start_health)
-    : goal_(goal), hz_(hz), start_health_(start_health), limit_frames_(limitFrames(goal, hz)) {}
+    : goal_(goal),
+      hz_(hz),
+      start_health_(start_health),
+      limit_frames_(limitFrames(goal, hz)),
+      hold_frames_(holdFrames(goal, hz)) {}
 
 void ParkingChallenge::observe(const World& world) {
   if (over()) return;
@@ -53,7 +61,12 @@ void ParkingChallenge::observe(const World& world) {
     wrecked_ = true;
     return;
   }
-  if (last_.parked()) {
+  if (!last_.parked()) {
+    hold_start_.reset();
+  } else if (!hold_start_) {
+    hold_start_ = frames_;
+  }
+  if (hold_start_ && frames_ - *hold_start_ >= hold_frames_) {
     parked_frame_ = frames_;
     ParkingScore s;
     s.frames = frames_;
@@ -68,6 +81,14 @@ void ParkingChallenge::observe(const World& world) {
 
 double ParkingChallenge::seconds() const {
   return static_cast<double>(frames_) / hz_;
+}
+
+double ParkingChallenge::heldSeconds() const {
+  return hold_start_ ? static_cast<double>(frames_ - *hold_start_) / hz_ : 0.0;
+}
+
+double ParkingChallenge::holdSeconds() const {
+  return static_cast<double>(hold_frames_) / hz_;
 }
 
 }  // namespace cardemo

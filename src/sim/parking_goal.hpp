@@ -47,16 +47,20 @@ struct ParkingScore {
 /// Frames allowed by the time limit at `hz`: ceil(time_limit * hz), or nullopt without a limit.
 [[nodiscard]] std::optional<std::int64_t> limitFrames(const Goal& goal, double hz);
 
+/// Frames the parked checks must hold at `hz`: ceil(hold_time * hz) (0: parked at once).
+[[nodiscard]] std::int64_t holdFrames(const Goal& goal, double hz);
+
 /// A parking challenge run beside a World: call observe() on frame 0 and after every step.
 class ParkingChallenge {
  public:
   /// A challenge for `goal`; `hz` converts frames to seconds, `start_health` measures damage.
   ParkingChallenge(const Goal& goal, double hz, int start_health);
 
-  /// Looks at the world's current frame. Does nothing once the challenge is over.
+  /// Looks at the world's current frame. Does nothing once the challenge is over. The car is
+  /// parked at the frame where the checks have held on every frame since holdFrames() earlier.
   void observe(const World& world);
 
-  /// First frame at which the car was parked.
+  /// Frame at which the car was parked (the checks held for the goal's hold time).
   [[nodiscard]] std::optional<std::int64_t> parkedFrame() const { return parked_frame_; }
   /// The score, once parked.
   [[nodiscard]] std::optional<ParkingScore> score() const { return score_; }
@@ -70,6 +74,12 @@ class ParkingChallenge {
   [[nodiscard]] std::int64_t frames() const { return frames_; }
   /// The timer in seconds.
   [[nodiscard]] double seconds() const;
+  /// First frame of the current unbroken run of passing checks (the hold), if one is under way.
+  [[nodiscard]] std::optional<std::int64_t> holdStart() const { return hold_start_; }
+  /// Seconds the checks have held so far (0 when they do not hold now).
+  [[nodiscard]] double heldSeconds() const;
+  /// The goal's hold time rounded up to whole frames, s (what heldSeconds() must reach).
+  [[nodiscard]] double holdSeconds() const;
   /// The last check made (for the HUD).
   [[nodiscard]] const ParkingCheck& lastCheck() const { return last_; }
   /// The goal.
@@ -80,6 +90,8 @@ class ParkingChallenge {
   double hz_;
   int start_health_;
   std::optional<std::int64_t> limit_frames_;
+  std::int64_t hold_frames_;
+  std::optional<std::int64_t> hold_start_;
   std::int64_t frames_ = 0;
   ParkingCheck last_;
   std::optional<std::int64_t> parked_frame_;

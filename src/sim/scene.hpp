@@ -53,8 +53,9 @@ struct Goal {
   double heading_tolerance_deg = 8.0;  ///< Largest heading error, degrees.
   bool either_direction = false;       ///< Facing opposite to the bay heading also counts.
   double max_speed = 0.3;              ///< Largest |speed| that counts as stopped, m/s.
-  std::optional<double> par_time;      ///< Time for three stars, s.
-  std::optional<double> time_limit;    ///< The run ends unparked after this long, s.
+  double hold_time = 0.5;  ///< How long position, heading and speed must hold before PARKED, s.
+  std::optional<double> par_time;    ///< Time for three stars, s.
+  std::optional<double> time_limit;  ///< The run ends unparked after this long, s.
 };
 
 /// Marks a scene as a level of the scene picker (`level` in the scene file).

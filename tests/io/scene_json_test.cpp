@@ -522,6 +522,7 @@ TEST(SceneJsonGoal, OnlyTheBayIsRequired) {
   EXPECT_EQ(g.position_tolerance, Goal{}.position_tolerance);
   EXPECT_EQ(g.heading_tolerance_deg, Goal{}.heading_tolerance_deg);
   EXPECT_EQ(g.max_speed, Goal{}.max_speed);
+  EXPECT_EQ(g.hold_time, 0.5);
   EXPECT_FALSE(g.either_direction);
   EXPECT_FALSE(g.par_time.has_value());
   EXPECT_FALSE(g.time_limit.has_value());
@@ -579,6 +580,41 @@ TEST(SceneJsonGoalErrors, MaxSpeedAndTimesAreValidated) {
                       "goal.par_time: must be finite, > 0"));
   EXPECT_TRUE(failsAt(parse(goalWith("\"time_limit\": 60", "\"time_limit\": 1e6")), 29,
                       "goal.time_limit: must be finite, > 0 and at most 100000 s"));
+}
+
+std::string goalWithHold(std::string_view hold) {
+  return goalWith("\"max_speed\": 0.25,",
+                  "\"max_speed\": 0.25, \"hold_time\": " + std::string(hold) + ",");
+}
+
+TEST(SceneJsonGoal, HoldTimeIsReadAndZeroIsAllowed) {
+  for (const auto& [text, value] :
+       {std::pair{"1.25", 1.25}, std::pair{"0", 0.0}, std::pair{"59.5", 59.5}}) {
+    const Parsed<Scene> p = parse(goalWithHold(text));
+    ASSERT_TRUE(p.ok()) << text << ": " << p.error().toString();
+    EXPECT_EQ(p.value().goal->hold_time, value) << text;
+  }
+}
+
+TEST(SceneJsonGoalErrors, HoldTimeIsValidated) {
+  for (const char* bad : {"-0.1", "60.5", "1e300"}) {
+    EXPECT_TRUE(failsAt(parse(goalWithHold(bad)), 27,
+                        "goal.hold_time: must be finite, >= 0 and at most 60 s"))
+        << bad;
+  }
+  EXPECT_TRUE(failsAt(parse(goalWithHold("\"long\"")), 27, "goal.hold_time: expected a number"));
+  EXPECT_TRUE(failsAt(parse(goalWithHold("true")), 27, "goal.hold_time: expected a number"));
+}
+
+TEST(SceneJsonGoalErrors, HoldTimeMustBeShorterThanTheTimeLimit) {
+  const std::string text =
+      replaced(replaced(goalWithHold("10"), "\"time_limit\": 60", "\"time_limit\": 10"),
+               "\"par_time\": 15", "\"par_time\": 5");
+  EXPECT_TRUE(failsAt(parse(text), 27, "goal.hold_time: must be less than goal.time_limit"));
+  const std::string par_ok =
+      replaced(replaced(goalWithHold("9.5"), "\"time_limit\": 60", "\"time_limit\": 10"),
+               "\"par_time\": 15", "\"par_time\": 5");
+  EXPECT_TRUE(parse(par_ok).ok()) << parse(par_ok).error().toString();
 }
 
 TEST(SceneJsonGoalErrors, ParTimeAboveTimeLimit) {

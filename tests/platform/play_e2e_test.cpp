@@ -1,6 +1,7 @@
 // End-to-end: `cardemo play` under Xvfb driven by xdotool; the recording must replay headless to
 // the same outcome, a game stopped by SIGINT must leave a valid recording, and level 1 chosen in
-// the scene picker can be driven to PARKED. The help holds the simulation, a restart after GAME
+// the scene picker can be driven to PARKED, then N opens level 2, Esc returns to the picker and
+// Esc there quits. The help holds the simulation, a restart after GAME
 // OVER keeps both attempts' recordings, WASD and Space drive, and a replay played in the window
 // hands over only when the player drives.
 
@@ -536,12 +537,39 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   };
   ASSERT_TRUE(hold("Up", runs[0].count));
   ASSERT_TRUE(hold("", runs[1].count));
-  ASSERT_TRUE(hold("Down", runs[2].count + 60, parked));
+  ASSERT_TRUE(hold("Down", runs[2].count));
+  // Stopped in the bay, the car parks only once it has held still for the goal's hold time.
+  std::int64_t rest = 0;
+  for (std::size_t i = 3; i < runs.size(); ++i) rest += runs[i].count;
+  ASSERT_TRUE(hold("", rest + 60, parked));
   ASSERT_TRUE(parked()) << "not parked by frame " << frame() << ": " << slurp(json);
+  // This level's summary, before the next level writes its own.
+  const nlohmann::json live = loadJson(slurp(json));
+
+  // N on the PARKED panel opens level 2 in the same window; Esc there returns to the picker, and
+  // Esc in the picker quits.
+  const auto waitForTitle = [&](const std::string& name) {
+    std::string found;
+    const auto until = std::chrono::steady_clock::now() + 60s;
+    while (std::chrono::steady_clock::now() < until && game->running() &&
+           (shell(display_, "xdotool search --onlyvisible --name '" + name + "'", &found) != 0 ||
+            found.empty())) {
+      std::this_thread::sleep_for(100ms);
+    }
+    return !found.empty();
+  };
+  shell(display_, "xdotool key n");
+  ASSERT_TRUE(waitForTitle("level-2-reverse"))
+      << "N did not open level 2: " << slurp(dir_ / "play.log");
+  std::this_thread::sleep_for(300ms);
+  shell(display_, "xdotool key Escape");
+  ASSERT_TRUE(waitForTitle("choose a scene"))
+      << "Esc did not return to the picker: " << slurp(dir_ / "play.log");
+  EXPECT_TRUE(game->running()) << "Esc in a level quit the game: " << slurp(dir_ / "play.log");
+  std::this_thread::sleep_for(300ms);
   shell(display_, "xdotool key Escape");
   ASSERT_EQ(game->wait(10s), 0) << slurp(dir_ / "play.log");
 
-  const nlohmann::json live = loadJson(slurp(json));
   ASSERT_TRUE(live.is_object());
   EXPECT_EQ(live["scene"], "level-1-straight");
   const std::int64_t golden_parked = *golden.value().expect.parked.value();
@@ -550,12 +578,21 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   EXPECT_EQ(live["score"]["damage"], 0);
   EXPECT_EQ(live["score"]["frames"], live["parked"]);
   EXPECT_GE(live["score"]["stars"].get<int>(), 2);
+  // The last game (level 2, left with Esc) wrote its own summary.
+  const nlohmann::json last = loadJson(slurp(json));
+  ASSERT_TRUE(last.is_object());
+  EXPECT_EQ(last["scene"], "level-2-reverse");
 
   const nlohmann::json headless = replayHeadless(record, dir_ / "replay.out");
   ASSERT_TRUE(headless.is_object()) << slurp(dir_ / "replay.out");
   EXPECT_EQ(headless["hash"], live["hash"]);
   EXPECT_EQ(headless["parked"], live["parked"]);
   EXPECT_EQ(headless["score"], live["score"]);
+  // Level 2 was the second attempt of this run: recorded beside level 1's, not over it.
+  const cardemo::Parsed<cardemo::Replay> second =
+      cardemo::loadReplay((dir_ / "level1-2.replay").string());
+  ASSERT_TRUE(second.ok()) << second.error().toString();
+  EXPECT_NE(second.value().scene.find("level-2-reverse"), std::string::npos);
   // The score was saved as the best.
   const nlohmann::json best = loadJson(slurp(xdg / "cardemo" / "best-scores.json"));
   ASSERT_TRUE(best.is_object()) << "no best-scores file";

@@ -90,6 +90,33 @@ TEST(GameSession, RestartStartsAFreshWorldAndANumberedRecording) {
   EXPECT_TRUE(loadReplay(third).value().runs.at(0).keys.left);
 }
 
+// Levels played one after another from the picker continue the attempt count: the next level's
+// first attempt records beside, not over, the previous level's.
+TEST(GameSession, FirstAttemptContinuesTheCountOfEarlierGames) {
+  const fs::path dir = fs::temp_directory_path() / "cardemo_session_test";
+  fs::create_directories(dir);
+  const std::string path = (dir / "chain.replay").string();
+  const std::string third = (dir / "chain-3.replay").string();
+  const std::string fourth = (dir / "chain-4.replay").string();
+  for (const std::string& p : {path, third, fourth}) fs::remove(p);
+  SessionConfig config = lotConfig(path);
+  config.first_attempt = 3;
+  GameSession session(std::move(config));
+  EXPECT_EQ(session.attempt(), 3);
+  EXPECT_EQ(session.recordPath(), third);
+  for (int i = 0; i < 4; ++i) session.step({true, false, false, false});
+  session.restart();
+  EXPECT_EQ(session.attempt(), 4);
+  EXPECT_EQ(session.recordPath(), fourth);
+  for (int i = 0; i < 2; ++i) session.step({});
+  ASSERT_EQ(session.finishRecording(), "");
+  EXPECT_FALSE(fs::exists(path));
+  ASSERT_TRUE(loadReplay(third).ok());
+  EXPECT_EQ(loadReplay(third).value().totalFrames(), 4);
+  ASSERT_TRUE(loadReplay(fourth).ok());
+  EXPECT_EQ(loadReplay(fourth).value().totalFrames(), 2);
+}
+
 TEST(GameSession, RestartAfterGameOverKeepsTheEndedRun) {
   const fs::path dir = fs::temp_directory_path() / "cardemo_session_test";
   fs::create_directories(dir);

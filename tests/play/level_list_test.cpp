@@ -37,6 +37,23 @@ TEST(LevelList, BundledLevelsInOrderThenFreeDrive) {
   EXPECT_NE(e[4].path.find("parking-lot.json"), std::string::npos);
 }
 
+TEST(LevelList, NextLevelStopsAtTheLastLevelAndNeverLeadsToFreeDrive) {
+  const std::vector<LevelEntry> e{{"a.json", "A", "a", 1, false},
+                                  {"b.json", "B", "b", 2, false},
+                                  {"lot.json", "Free drive", "parking-lot", 0, true}};
+  EXPECT_EQ(nextLevel(e, 0), std::optional<std::size_t>(1));
+  EXPECT_EQ(nextLevel(e, 1), std::nullopt);  // the last level: free drive is not "next"
+  EXPECT_EQ(nextLevel(e, 2), std::nullopt);  // free drive has no next level
+  EXPECT_EQ(nextLevel(e, 7), std::nullopt);  // out of range
+  std::vector<std::string> warnings;
+  const std::vector<LevelEntry> bundled =
+      listLevels(std::string(CARDEMO_SOURCE_DIR) + "/assets", warnings);
+  ASSERT_EQ(bundled.size(), 5u);
+  EXPECT_EQ(nextLevel(bundled, 0), std::optional<std::size_t>(1));
+  EXPECT_EQ(nextLevel(bundled, 2), std::optional<std::size_t>(3));
+  EXPECT_EQ(nextLevel(bundled, 3), std::nullopt);
+}
+
 TEST(LevelList, ScenesWithoutLevelAreLeftOutAndBrokenOnesWarned) {
   const fs::path dir = fs::temp_directory_path() / ("cardemo_levels_" + std::to_string(getpid()));
   fs::remove_all(dir);

@@ -13,13 +13,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The car starts at rest in the bay (it parks at frame 0); tests move the bay and give the car a
-// speed so that it rolls in and brakes.
+// The car starts at rest in the bay (with no hold time it parks at frame 0); tests move the bay
+// and give the car a speed so that it rolls in and brakes.
 Scene rollIn() {
   Scene s = test::sceneWith({});
   s.name = "roll-in";
   Goal g;
   g.bay.center = {0.0, 0.0};
+  g.hold_time = 0.0;
   s.goal = g;
   return s;
 }
@@ -68,6 +69,22 @@ TEST(LevelRun, ParkedScoreIsSavedAndKeptOnlyWhenBetter) {
   }
   EXPECT_FALSE(run3.newBest());
   fs::remove_all(dir);
+}
+
+TEST(LevelRun, EndsOnlyOnceTheHoldIsOver) {
+  Scene scene = rollIn();
+  scene.goal->hold_time = 0.25;  // 30 frames at 120 Hz
+  World world(scene);
+  LevelRun run(world, "");
+  EXPECT_FALSE(run.over());
+  int ended_at = -1;
+  for (int i = 1; i <= 40 && ended_at < 0; ++i) {
+    world.step(InputFrame{});
+    if (run.observe(world)) ended_at = i;
+  }
+  EXPECT_EQ(ended_at, 30);
+  EXPECT_TRUE(run.over());
+  EXPECT_EQ(run.challenge()->parkedFrame(), 30);
 }
 
 TEST(LevelRun, CorruptBestFileWarnsOnceAndTheRunGoesOn) {

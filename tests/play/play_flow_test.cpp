@@ -110,5 +110,35 @@ TEST(PlayFlow, SpeedIsClampedAndOnlyAppliesToPlayback) {
   EXPECT_EQ(flow.speed(), PlayFlow::kMinSpeed);
 }
 
+// N means "one step" until the level is parked, then "next level" (only when there is one).
+TEST(PlayFlow, NStepsWhilePausedAndOpensTheNextLevelOnceParked) {
+  PlayFlow flow;
+  const LevelLinks links{true, true};
+  flow.togglePause();
+  EXPECT_EQ(flow.next(false, links), LevelExit::kStay);
+  EXPECT_EQ(flow.stepsToRun(0), 1);  // still the single step
+  EXPECT_EQ(flow.next(true, links), LevelExit::kNextLevel);
+  EXPECT_EQ(flow.stepsToRun(0), 0);                                       // and no step with it
+  EXPECT_EQ(flow.next(true, LevelLinks{true, false}), LevelExit::kStay);  // the last level
+  EXPECT_EQ(flow.next(true, LevelLinks{}), LevelExit::kStay);  // a scene given on the command line
+  flow.togglePause();
+  EXPECT_EQ(flow.next(false, links), LevelExit::kStay);  // not paused: N does nothing
+  EXPECT_EQ(flow.stepsToRun(0), 0);
+}
+
+TEST(PlayFlow, EscapeReturnsToThePickerOnlyWhenStartedFromIt) {
+  EXPECT_EQ(escapeExit(LevelLinks{true, true}), LevelExit::kPicker);
+  EXPECT_EQ(escapeExit(LevelLinks{true, false}), LevelExit::kPicker);
+  EXPECT_EQ(escapeExit(LevelLinks{}), LevelExit::kQuit);
+}
+
+TEST(PlayFlow, EndPanelListsOnlyTheKeysThatWork) {
+  EXPECT_EQ(endPanelKeys(LevelLinks{true, true}, true),
+            "Enter retry    N next level    Esc levels");
+  EXPECT_EQ(endPanelKeys(LevelLinks{true, true}, false), "Enter retry    Esc levels");  // TIME UP
+  EXPECT_EQ(endPanelKeys(LevelLinks{true, false}, true), "Enter retry    Esc levels");
+  EXPECT_EQ(endPanelKeys(LevelLinks{}, true), "Enter retry    Esc quit");
+}
+
 }  // namespace
 }  // namespace cardemo

@@ -339,6 +339,19 @@ TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
   }
 }
 
+TEST(Hud, SpeedReadsStoppedOnceTheRunIsOver) {
+  Scene scene = sceneWith({});
+  scene.player.speed = 5.0;
+  World world(std::move(scene));
+  Camera camera;
+  EXPECT_TRUE(drawn(world, camera).hasText("18 km/h"));
+  DrawOptions options;
+  options.run_over = true;
+  const RecordingCanvas canvas = drawn(world, camera, options);
+  EXPECT_TRUE(canvas.hasText("stopped"));
+  EXPECT_FALSE(canvas.hasText("18 km/h"));
+}
+
 TEST(Hud, GameOverPanelAtZeroHealth) {
   Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
   scene.player.health = 1;
@@ -364,6 +377,29 @@ TEST(Hud, HelpPanelListsEveryKey) {
     EXPECT_TRUE(canvas.hasText(key)) << key;
   }
   EXPECT_FALSE(drawn(world, camera).hasText("F12"));
+  // The keys of the end of a run: retry, next level, back to the picker.
+  for (const char* what : {"retry after the run ends (PARKED, TIME UP, GAME OVER)",
+                           "step one frame while paused; once parked: next level",
+                           "back to the level list (when started from it), else quit"}) {
+    EXPECT_TRUE(canvas.hasText(what)) << what;
+  }
+}
+
+TEST(Hud, GameOverPanelListsTheKeysItIsGiven) {
+  Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
+  scene.player.health = 1;
+  scene.player.speed = 10.0;
+  World world(std::move(scene));
+  for (int i = 0; i < 240 && !world.gameOver(); ++i) world.step(InputFrame{});
+  ASSERT_TRUE(world.gameOver());
+  Camera camera;
+  camera.center = world.car().position;
+  EXPECT_TRUE(drawn(world, camera).hasText("Enter restart    Esc quit"));
+  DrawOptions options;
+  options.game_over_keys = "Enter retry    Esc levels";
+  const RecordingCanvas canvas = drawn(world, camera, options);
+  EXPECT_TRUE(canvas.hasText("Enter retry    Esc levels"));
+  EXPECT_FALSE(canvas.hasText("Enter restart    Esc quit"));
 }
 
 }  // namespace

@@ -74,9 +74,13 @@ TEST(GoalOverlay, BayOffScreenGetsAnArrowWithTheDistance) {
 
 TEST(GoalOverlay, ParkedPanelWithSummaryAndBest) {
   const Scene scene = bayScene(0.0);
-  const World world(scene);
+  World world(scene);
   ParkingChallenge c(*scene.goal, 120.0, 100);
   c.observe(world);
+  while (!c.over()) {  // at rest in the bay: parked once the hold is over
+    world.step(InputFrame{});
+    c.observe(world);
+  }
   ASSERT_TRUE(c.parkedFrame().has_value());
   GoalView view;
   view.best = ParkingScore{600, 5.0, 0, 3};
@@ -102,6 +106,51 @@ TEST(GoalOverlay, TimeUpPanel) {
   const RecordingCanvas canvas = overlay(world, c);
   EXPECT_TRUE(canvas.hasText("TIME UP"));
   EXPECT_TRUE(canvas.hasText("none yet"));
+}
+
+// The line under the timer: distance while driving, the hold while stopped in the bay, then what
+// ended the run; the end panel lists the keys it is given.
+TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
+  const Scene scene = bayScene(0.0);
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  EXPECT_EQ(timerDetail(c), "par 12.0 s   left 60.0 s   hold 0.0 / 0.5 s");
+  for (int i = 0; i < 30; ++i) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_EQ(timerDetail(c), "par 12.0 s   left 59.8 s   hold 0.2 / 0.5 s");
+  while (!c.over()) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_EQ(timerDetail(c), "parked   par 12.0 s");
+  GoalView view;
+  view.keys = "Enter retry    N next level    Esc levels";
+  const RecordingCanvas canvas = overlay(world, c, view);
+  EXPECT_TRUE(canvas.hasText("Enter retry    N next level    Esc levels"));
+  EXPECT_FALSE(canvas.hasText("Enter restart    Esc quit"));
+  EXPECT_TRUE(canvas.hasText("0.5 s"));  // the timer stopped at the parked time
+
+  const Scene far = bayScene(10.0);
+  const World away(far);
+  ParkingChallenge d(*far.goal, 120.0, 100);
+  d.observe(away);
+  EXPECT_EQ(timerDetail(d), "par 12.0 s   left 60.0 s   bay 10.0 m");
+}
+
+TEST(GoalOverlay, TimerDetailSaysTimeUp) {
+  Scene scene = bayScene(50.0);
+  scene.goal->time_limit = 0.25;
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  while (!c.over()) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_EQ(timerDetail(c), "time up");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "geometry/angle.hpp"
@@ -116,8 +117,19 @@ TEST(ParkingScore, LimitFramesRoundsUp) {
   EXPECT_EQ(limitFrames(g, 120.0), 1);
 }
 
-// A car that starts rolling at 2 m/s straight towards a bay 10 m ahead and brakes: it parks at
-// the first frame where it is in the bay and slow enough; the World's hash is unaffected.
+TEST(ParkingScore, HoldFramesRoundUpAndZeroMeansAtOnce) {
+  Goal g = bayGoal();
+  EXPECT_EQ(holdFrames(g, 120.0), 60);  // the default 0.5 s
+  g.hold_time = 0.0;
+  EXPECT_EQ(holdFrames(g, 120.0), 0);
+  g.hold_time = 0.001;
+  EXPECT_EQ(holdFrames(g, 120.0), 1);
+  g.hold_time = 0.25;
+  EXPECT_EQ(holdFrames(g, 60.0), 15);
+}
+
+// A car that starts at rest 4 m before a bay, drives towards it and brakes: it parks once the
+// checks have held for the hold time; the World's hash is unaffected.
 Scene driveInScene() {
   Scene s = test::sceneWith({}, 0.0, 0.0, 0.0);
   Goal g;
@@ -130,43 +142,148 @@ Scene driveInScene() {
   return s;
 }
 
-TEST(ParkingChallenge, ParksAtTheFirstFrameInsideAndSlowEnough) {
-  const Scene scene = driveInScene();
+InputFrame driveIn(const World& world) {
+  InputFrame in;
+  in.up = world.car().position.x() < 2.5;
+  in.down = !in.up && world.car().speed > 0.0;
+  return in;
+}
+
+// Runs `scene` with `drive` until the challenge is over (or `frames` steps) and checks that it
+// parks where an independent count of consecutive passing checks reaches the hold frames.
+void expectParksAfterTheHold(const Scene& scene,
+                             const std::function<InputFrame(const World&)>& drive, int frames,
+                             std::int64_t* parked_at = nullptr) {
   World world(scene);
   ParkingChallenge challenge(*scene.goal, world.settings().hz, scene.player.health);
-  challenge.observe(world);
-  EXPECT_FALSE(challenge.over());
+  const std::int64_t hold = holdFrames(*scene.goal, world.settings().hz);
+  std::int64_t run_start = -1;
   std::int64_t expected = -1;
-  for (int i = 0; i < 2400 && !challenge.over(); ++i) {
-    InputFrame in;
-    in.up = world.car().position.x() < 2.5;
-    in.down = !in.up && world.car().speed > 0.0;
-    world.step(in);
+  const auto count = [&] {
     const ParkingCheck c =
         checkParking(*scene.goal, world.car().position, world.car().direction, world.car().speed);
-    if (expected < 0 && c.parked()) expected = world.frame();
+    if (!c.parked())
+      run_start = -1;
+    else if (run_start < 0)
+      run_start = world.frame();
+    if (expected < 0 && run_start >= 0 && world.frame() - run_start >= hold) {
+      expected = world.frame();
+    }
+  };
+  count();
+  challenge.observe(world);
+  for (int i = 0; i < frames && !challenge.over(); ++i) {
+    world.step(drive(world));
+    count();
     challenge.observe(world);
   }
+  ASSERT_GE(expected, 0) << "the script never parks";
   ASSERT_TRUE(challenge.parkedFrame().has_value());
   EXPECT_EQ(*challenge.parkedFrame(), expected);
   ASSERT_TRUE(challenge.score().has_value());
   EXPECT_EQ(challenge.score()->frames, expected);
+  EXPECT_EQ(challenge.frames(), expected);
+  if (parked_at != nullptr) *parked_at = expected;
+}
+
+TEST(ParkingChallenge, ParksOnceTheChecksHeldForTheHoldTime) {
+  const Scene scene = driveInScene();
+  std::int64_t parked = 0;
+  expectParksAfterTheHold(scene, driveIn, 2400, &parked);
+  // The same drive with no hold parks 60 frames (0.5 s at 120 Hz) earlier: the car stays put.
+  Scene at_once = scene;
+  at_once.goal->hold_time = 0.0;
+  std::int64_t immediate = 0;
+  expectParksAfterTheHold(at_once, driveIn, 2400, &immediate);
+  EXPECT_EQ(parked, immediate + 60);
+}
+
+TEST(ParkingChallenge, ScoreAndTimerStopAtTheParkedFrame) {
+  const Scene scene = driveInScene();
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, world.settings().hz, scene.player.health);
+  challenge.observe(world);
+  while (!challenge.over() && world.frame() < 2400) {
+    world.step(driveIn(world));
+    challenge.observe(world);
+  }
+  ASSERT_TRUE(challenge.parkedFrame().has_value());
+  const std::int64_t parked = *challenge.parkedFrame();
   EXPECT_EQ(challenge.score()->damage, 0);
   EXPECT_EQ(challenge.score()->stars, 3);
-  EXPECT_EQ(challenge.frames(), expected);
+  EXPECT_DOUBLE_EQ(challenge.heldSeconds(), 0.5);
   // Observing more frames changes nothing once parked.
   world.step(InputFrame{true, false, false, false});
   challenge.observe(world);
-  EXPECT_EQ(challenge.frames(), expected);
+  EXPECT_EQ(challenge.frames(), parked);
+  EXPECT_EQ(challenge.seconds(), static_cast<double>(parked) / 120.0);
 }
 
-TEST(ParkingChallenge, StartingInTheBayAtRestParksAtFrameZero) {
+TEST(ParkingChallenge, StartingInTheBayAtRestParksAfterTheHold) {
   Scene scene = driveInScene();
   scene.goal->bay.center = {0.0, 0.0};
-  const World world(scene);
+  World world(scene);
   ParkingChallenge challenge(*scene.goal, 120.0, 100);
   challenge.observe(world);
-  EXPECT_EQ(challenge.parkedFrame(), 0);
+  EXPECT_FALSE(challenge.parkedFrame().has_value());
+  EXPECT_EQ(challenge.holdStart(), 0);
+  for (int i = 0; i < 59; ++i) {
+    world.step(InputFrame{});
+    challenge.observe(world);
+  }
+  EXPECT_FALSE(challenge.over());
+  EXPECT_NEAR(challenge.heldSeconds(), 59.0 / 120.0, 1e-12);
+  world.step(InputFrame{});
+  challenge.observe(world);
+  EXPECT_EQ(challenge.parkedFrame(), 60);
+
+  scene.goal->hold_time = 0.0;
+  const World again(scene);
+  ParkingChallenge at_once(*scene.goal, 120.0, 100);
+  at_once.observe(again);
+  EXPECT_EQ(at_once.parkedFrame(), 0);
+}
+
+// The play-test's complaint: a car passing through the bay below the speed limit for a moment
+// (here pulling away from rest inside it) must not count as parked.
+TEST(ParkingChallenge, PullingAwayThroughTheBayIsNotParked) {
+  Scene scene = driveInScene();
+  scene.goal->bay.center = {0.45, 0.0};  // the car starts inside the position tolerance
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  challenge.observe(world);
+  int passing = 0;
+  for (int i = 0; i < 240; ++i) {
+    world.step(InputFrame{true, false, false, false});
+    challenge.observe(world);
+    if (challenge.lastCheck().parked()) ++passing;
+  }
+  EXPECT_GT(passing, 0) << "the checks never passed: the test shows nothing";
+  EXPECT_FALSE(challenge.parkedFrame().has_value());
+  EXPECT_FALSE(challenge.holdStart().has_value());
+  EXPECT_EQ(challenge.heldSeconds(), 0.0);
+}
+
+// A hold broken by a frame outside the checks starts again from zero.
+TEST(ParkingChallenge, ABrokenHoldStartsAgain) {
+  Scene scene = driveInScene();
+  scene.goal->bay.center = {0.0, 0.0};
+  int frame = 0;
+  bool broken = false;
+  // 30 frames at rest in the bay, a push of 30 frames (faster than max_speed), then braking to a
+  // stop.
+  const auto drive = [&](const World& world) {
+    ++frame;
+    broken = broken || std::abs(world.car().speed) > scene.goal->max_speed;
+    InputFrame in;
+    in.up = frame > 30 && frame <= 60;
+    in.down = frame > 60 && world.car().speed > 0.0;
+    return in;
+  };
+  std::int64_t parked = 0;
+  expectParksAfterTheHold(scene, drive, 2400, &parked);
+  EXPECT_TRUE(broken) << "the push never broke the hold: the test shows nothing";
+  EXPECT_GT(parked, 120);  // not at 60: the hold restarted after the push
 }
 
 TEST(ParkingChallenge, TimeLimitEndsTheRunAtItsFrame) {
