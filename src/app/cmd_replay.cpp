@@ -2,6 +2,7 @@
 // expectations.
 
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -114,10 +115,15 @@ int runReplayCommand(const ReplayOptions& options) {
     trace->write(traceRow(world));
   }
   std::optional<ParkingChallenge> challenge = startChallenge(world);
-  runReplayInputs(world, replay.value(), [&](const World& w) {
-    if (trace) trace->write(traceRow(w));
-    if (challenge) challenge->observe(w);
-  });
+  // No trace and no goal: nothing to observe between steps, so no per-frame call at all.
+  std::function<void(const World&)> after_step;
+  if (trace || challenge) {
+    after_step = [&](const World& w) {
+      if (trace) trace->write(traceRow(w));
+      if (challenge) challenge->observe(w);
+    };
+  }
+  runReplayInputs(world, replay.value(), after_step);
   const ParkingChallenge* goal = challenge ? &*challenge : nullptr;
   if (trace) {
     if (std::string why = trace->commit(); !why.empty()) {

@@ -52,12 +52,44 @@ std::string_view firstWord(std::string_view& s) {
   return word;
 }
 
-// Cuts a comment: `#` at the start or after a blank.
-std::string_view stripComment(std::string_view line) {
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    if (line[i] == '#' && (i == 0 || text::isBlank(line[i - 1]))) return line.substr(0, i);
+// One line of the file as a single pass over its bytes finds it: where it ends, its first control
+// byte and where its comment starts (`#` at the start or after a blank).
+struct ScannedLine {
+  std::string_view text;                         // without '\n' and one trailing '\r'
+  std::size_t control = std::string_view::npos;  // first control byte (not tab), or npos
+  std::size_t comment = std::string_view::npos;  // first `#` that starts a comment, or npos
+};
+
+// Scans the line starting at `pos` and moves `pos` past its '\n'; false at the end of `src`.
+bool scanLine(std::string_view src, std::size_t& pos, ScannedLine& out) {
+  if (pos >= src.size()) return false;
+  const char* const begin = src.data() + pos;
+  const char* const end = src.data() + src.size();
+  const char* p = begin;
+  std::size_t control = std::string_view::npos;
+  std::size_t comment = std::string_view::npos;
+  for (; p != end; ++p) {
+    const auto u = static_cast<unsigned char>(*p);
+    if (u >= 0x20 && u != 0x7f) {
+      if (u == '#' && comment == std::string_view::npos && (p == begin || text::isBlank(p[-1]))) {
+        comment = static_cast<std::size_t>(p - begin);
+      }
+      continue;
+    }
+    if (u == '\n') break;
+    if (u != '\t' && control == std::string_view::npos) {
+      control = static_cast<std::size_t>(p - begin);
+    }
   }
-  return line;
+  std::size_t size = static_cast<std::size_t>(p - begin);
+  pos += size + 1;
+  // One '\r' before the '\n' (or the end) belongs to the line break, not to the line.
+  if (size > 0 && begin[size - 1] == '\r') {
+    --size;
+    if (control == size) control = std::string_view::npos;
+  }
+  out = {std::string_view(begin, size), control, comment};
+  return true;
 }
 
 bool parseKeys(std::string_view s, InputFrame& keys, std::string& why) {
@@ -127,24 +159,29 @@ class ReplayParser {
   explicit ReplayParser(const std::string& file) : file_(file) {}
 
   std::optional<InputError> parse(std::string_view src, Replay& r) {
-    text::LineReader lines(src);
-    std::string_view line;
+    std::size_t pos = 0;
+    ScannedLine scanned;
     bool header = false;
-    while (lines.next(line)) {
-      line_ = lines.number();
+    while (scanLine(src, pos, scanned)) {
+      ++line_;
+      std::string_view line = scanned.text;
       if (line.size() > kMaxLineBytes) {
         return error("line longer than " + std::to_string(kMaxLineBytes) + " bytes");
       }
-      if (line_ == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
-      if (const std::size_t at = text::findControl(line); at != std::string_view::npos) {
-        return error("control character " + quoted(line.substr(at, 1)) + " in line");
-      }
       if (!header) {
+        // Line 1 (the header) may start with a byte order mark, which is not part of the line.
+        if (line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
+        if (const std::size_t at = text::findControl(line); at != std::string_view::npos) {
+          return error("control character " + quoted(line.substr(at, 1)) + " in line");
+        }
         if (auto e = parseHeader(src, line)) return e;
         header = true;
         continue;
       }
-      line = trim(stripComment(line));
+      if (scanned.control != std::string_view::npos) {
+        return error("control character " + quoted(line.substr(scanned.control, 1)) + " in line");
+      }
+      line = trim(line.substr(0, scanned.comment));
       if (line.empty()) continue;
       if (auto e = parseLine(line, r)) return e;
     }
@@ -181,6 +218,8 @@ class ReplayParser {
   std::optional<InputError> parseLine(std::string_view line, Replay& r) {
     std::string_view rest = line;
     const std::string_view word = firstWord(rest);
+    // Input lines first: all but a handful of a replay's lines are COUNT KEYS.
+    if (word.front() >= '0' && word.front() <= '9') return parseInput(word, rest, r);
     if (word == "scene") {
       if (scene_line_ != 0) return duplicate("scene", scene_line_);
       if (rest.empty()) return error("scene: missing path");
@@ -202,7 +241,6 @@ class ReplayParser {
       return std::nullopt;
     }
     if (word == "expect") return parseExpect(rest, r.expect);
-    if (word.front() >= '0' && word.front() <= '9') return parseInput(word, rest, r);
     if (word.front() == '-' || word.front() == '+') {
       return error("count: expected a whole number >= 1, found " + quoted(word));
     }

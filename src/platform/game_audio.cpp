@@ -1,12 +1,13 @@
 #include "platform/game_audio.hpp"
 
 #include <SDL.h>
-#include <SDL_mixer.h>
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+
+#include "platform/mixer_library.hpp"
 
 namespace cardemo {
 namespace {
@@ -42,11 +43,15 @@ class QuietStderr {
   int saved_ = -1;
 };
 
-// Opens the device with the library's own complaints silenced; empty or why it failed.
-std::string openDevice() {
+// Loads the mixer and opens the device with the library's own complaints silenced; empty or why
+// it failed. `mix` is set once the mixer is loaded.
+std::string openDevice(const MixerLibrary*& mix) {
   const QuietStderr quiet;
+  std::string why;
+  mix = mixerLibrary(why);
+  if (mix == nullptr) return why;
   if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return SDL_GetError();
-  if (Mix_OpenAudio(22050, AUDIO_S16SYS, 2, 1024) != 0) {
+  if (mix->OpenAudio(22050, AUDIO_S16SYS, 2, 1024) != 0) {
     std::string why = Mix_GetError();
     SDL_QuitSubSystem(SDL_INIT_AUDIO);
     return why;
@@ -66,12 +71,12 @@ GameAudio::GameAudio(const std::string& folder, bool muted) : muted_(muted) {
     message_ = "cannot find the sounds folder (assets/sounds): playing without sound";
     return;
   }
-  if (const std::string why = openDevice(); !why.empty()) {
+  if (const std::string why = openDevice(mix_); !why.empty()) {
     message_ = "no audio device (" + why + "): playing without sound";
     return;
   }
   const auto load = [&](const std::string& name) -> Mix_Chunk* {
-    Mix_Chunk* chunk = Mix_LoadWAV((folder + "/" + name).c_str());
+    Mix_Chunk* chunk = mix_->LoadWAV((folder + "/" + name).c_str());
     if (chunk == nullptr && message_.empty()) {
       message_ = folder + "/" + name + ": cannot load (" + Mix_GetError() +
                  "): playing without sound (scripts/make_sounds.py makes the sounds)";
@@ -86,25 +91,25 @@ GameAudio::GameAudio(const std::string& folder, bool muted) : muted_(muted) {
   chime_ = load("chime.wav");
   if (!message_.empty()) return;  // the destructor frees what was loaded
   open_ = true;
-  Mix_AllocateChannels(kChannels);
-  Mix_ReserveChannels(kLoopChannels);
-  Mix_GroupChannels(kLoopChannels, kChannels - 1, kOneShotGroup);
+  mix_->AllocateChannels(kChannels);
+  mix_->ReserveChannels(kLoopChannels);
+  mix_->GroupChannels(kLoopChannels, kChannels - 1, kOneShotGroup);
   // The loops run all the time at volume 0; apply() only moves their levels.
   for (std::size_t i = 0; i < kEngineLoops; ++i) {
-    Mix_Volume(static_cast<int>(i), 0);
-    Mix_PlayChannel(static_cast<int>(i), engine_[i], -1);
+    mix_->Volume(static_cast<int>(i), 0);
+    mix_->PlayChannel(static_cast<int>(i), engine_[i], -1);
   }
-  Mix_Volume(kScreechChannel, 0);
-  Mix_PlayChannel(kScreechChannel, screech_, -1);
+  mix_->Volume(kScreechChannel, 0);
+  mix_->PlayChannel(kScreechChannel, screech_, -1);
 }
 
 GameAudio::~GameAudio() {
-  if (SDL_WasInit(SDL_INIT_AUDIO) == 0) return;
-  const bool mixer_open = Mix_QuerySpec(nullptr, nullptr, nullptr) != 0;
-  if (mixer_open) Mix_HaltChannel(-1);
-  for (Mix_Chunk* chunk : engine_) Mix_FreeChunk(chunk);
-  for (Mix_Chunk* chunk : {screech_, impact_, chime_}) Mix_FreeChunk(chunk);
-  if (mixer_open) Mix_CloseAudio();
+  if (mix_ == nullptr || SDL_WasInit(SDL_INIT_AUDIO) == 0) return;
+  const bool mixer_open = mix_->QuerySpec(nullptr, nullptr, nullptr) != 0;
+  if (mixer_open) mix_->HaltChannel(-1);
+  for (Mix_Chunk* chunk : engine_) mix_->FreeChunk(chunk);
+  for (Mix_Chunk* chunk : {screech_, impact_, chime_}) mix_->FreeChunk(chunk);
+  if (mixer_open) mix_->CloseAudio();
   SDL_QuitSubSystem(SDL_INIT_AUDIO);
 }
 
@@ -112,9 +117,9 @@ void GameAudio::apply(const SoundFrame& frame) {
   if (!open_) return;
   const double master = muted_ ? 0.0 : 1.0;
   for (std::size_t i = 0; i < kEngineLoops; ++i) {
-    Mix_Volume(static_cast<int>(i), volume(master * frame.engine[i]));
+    mix_->Volume(static_cast<int>(i), volume(master * frame.engine[i]));
   }
-  Mix_Volume(kScreechChannel, volume(master * frame.screech));
+  mix_->Volume(kScreechChannel, volume(master * frame.screech));
   if (frame.impact > 0.0) playOnce(impact_, frame.impact);
 }
 
@@ -126,11 +131,11 @@ void GameAudio::playOnce(Mix_Chunk* chunk, double level) {
   if (!open_ || muted_ || chunk == nullptr) return;
   // The volume first, so not one sample plays at a channel's previous level; when every channel
   // is busy the oldest one-shot gives way.
-  int channel = Mix_GroupAvailable(kOneShotGroup);
-  if (channel < 0) channel = Mix_GroupOldest(kOneShotGroup);
+  int channel = mix_->GroupAvailable(kOneShotGroup);
+  if (channel < 0) channel = mix_->GroupOldest(kOneShotGroup);
   if (channel < 0) return;
-  Mix_Volume(channel, volume(level));
-  Mix_PlayChannel(channel, chunk, 0);
+  mix_->Volume(channel, volume(level));
+  mix_->PlayChannel(channel, chunk, 0);
 }
 
 }  // namespace cardemo

@@ -11,6 +11,8 @@ struct Mix_Chunk;
 
 namespace cardemo {
 
+struct MixerLibrary;
+
 /// Owns the audio device and the loaded sounds. Without an audio device (no sound card, under Xvfb,
 /// in CI) or without the sound files the game runs silently: every call is then harmless.
 class GameAudio {
@@ -37,6 +39,7 @@ class GameAudio {
 
  private:
   void playOnce(Mix_Chunk* chunk, double level);
+  const MixerLibrary* mix_ = nullptr;  // set once SDL2_mixer is loaded
   bool open_ = false;
   bool muted_ = false;
   std::string message_;

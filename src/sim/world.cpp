@@ -1,7 +1,9 @@
 #include "sim/world.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include "geometry/angle.hpp"
@@ -48,6 +50,20 @@ bool sameBox(const Obb2& a, const Obb2& b) {
 bool sameAabb(const Aabb2& a, const Aabb2& b) {
   return a.min.x() == b.min.x() && a.min.y() == b.min.y() && a.max.x() == b.max.x() &&
          a.max.y() == b.max.y();
+}
+
+bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// Every field bit for bit (so -0.0 differs from 0.0 and a NaN equals itself, as in the state hash).
+bool sameState(const CarState& a, const CarState& b) {
+  return sameBits(a.position.x(), b.position.x()) && sameBits(a.position.y(), b.position.y()) &&
+         sameBits(a.heading, b.heading) && sameBits(a.direction.x(), b.direction.x()) &&
+         sameBits(a.direction.y(), b.direction.y()) && sameBits(a.speed, b.speed) &&
+         sameBits(a.steer, b.steer) && sameBits(a.slip, b.slip) &&
+         sameBits(a.surface_normal.x(), b.surface_normal.x()) &&
+         sameBits(a.surface_normal.y(), b.surface_normal.y());
 }
 
 }  // namespace
@@ -449,6 +465,17 @@ void World::recordHits() {
 
 void World::step(const InputFrame& input) {
   const InputFrame in = gameOver() ? InputFrame{} : input;
+  if (resting_ && in == last_input_) {
+    // The last step took this same state and input and returned the car unchanged, touching
+    // nothing, with its box the one last detected: this step would repeat it bit for bit (detect()
+    // skipping its query, nothing to merge, resolve or record). Only the frame and the counters
+    // that step would have moved change.
+    ++frame_;
+    ++stats_.skipped_queries;
+    ++stats_.resting_steps;
+    previous_contacts_.clear();
+    return;
+  }
   const CarState start = car_;
   last_input_ = in;
   braking_ = start.speed != 0.0 && (in.handbrake || (in.up && in.down) ||
@@ -484,6 +511,8 @@ void World::step(const InputFrame& input) {
   }
   sliding_ = grip_limited || std::abs(car_.slip) > params_.skid_slip ||
              (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
+  resting_ = car_.speed == 0.0 && car_.slip == 0.0 && sameState(car_, start) && contacts_.empty() &&
+             detected_.empty() && !wall_contact_ && have_detected_;
 }
 
 }  // namespace cardemo

@@ -71,6 +71,7 @@ struct WorldStats {
   std::int64_t skipped_queries = 0;  ///< Steps where the player's box had not changed.
   std::int64_t sweeps = 0;           ///< Swept SAT tests run (continuous mode, fast steps only).
   std::int64_t broadphase_builds = 0;  ///< Times the broad-phase structure was built (once).
+  std::int64_t resting_steps = 0;  ///< Steps skipped whole: at rest, same input as the step before.
 };
 
 /// A contact of the current frame (for the debug overlay and the trace).
@@ -181,6 +182,8 @@ class World {
   double half_min_extent_ = 0.0;         // half the car's smaller side: the fast-motion bound, m
   double half_diagonal_ = 0.0;           // centre-to-corner distance, m
   bool have_detected_ = false;
+  bool resting_ =
+      false;  // the last step left the car bitwise where it was, at rest, touching nothing
 
   void detect();
   void narrowPhase(const Obb2& box, const Aabb2& bounds);

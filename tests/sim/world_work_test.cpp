@@ -98,6 +98,56 @@ TEST(WorldWork, NoNarrowPhaseWithoutACandidate) {
   }
 }
 
+TEST(WorldWork, RestingCarSkipsTheWholeStep) {
+  // At rest among parked cars, touching none, holding the same keys: after the first step (which
+  // tests the box once) every step is skipped whole, with no query, candidate, test or sweep.
+  const InputFrame left{false, false, true, false};
+  for (const InputFrame& held : {kNone, left}) {
+    World world(test::parkingLot(23));
+    ASSERT_TRUE(world.contacts().empty());
+    const WorldStats first = world.stats();
+    for (int f = 0; f < 1000; ++f) world.step(held);
+    const WorldStats& s = world.stats();
+    EXPECT_EQ(world.frame(), 1000);
+    EXPECT_EQ(s.broadphase_queries, first.broadphase_queries);
+    EXPECT_EQ(s.broadphase_candidates, first.broadphase_candidates);
+    EXPECT_EQ(s.narrowphase_tests, first.narrowphase_tests);
+    EXPECT_EQ(s.sweeps, 0);
+    EXPECT_EQ(s.skipped_queries, first.skipped_queries + 1000);
+    // Held left, the wheel turns to its lock first (moving the state, so those steps run).
+    if (held == kNone) {
+      EXPECT_EQ(s.resting_steps, 999);
+    } else {
+      EXPECT_GT(s.resting_steps, 900);
+      EXPECT_LT(s.resting_steps, 999);
+      EXPECT_EQ(world.car().steer, world.settings().car.max_steer);
+    }
+  }
+}
+
+TEST(WorldWork, RestingSkipGivesTheFullStepsState) {
+  // The handbrake at rest changes nothing, so alternating it with no keys runs every step in full
+  // (the input differs from the last step's) and must reach the same state as the skipped steps;
+  // then both drive off the same way.
+  World skipped(test::parkingLot(29));
+  World full(test::parkingLot(29));
+  const InputFrame handbrake{false, false, false, false, true};
+  for (int f = 0; f < 600; ++f) {
+    skipped.step(kNone);
+    full.step(f % 2 == 0 ? kNone : handbrake);
+  }
+  EXPECT_EQ(skipped.stats().resting_steps, 599);
+  EXPECT_EQ(full.stats().resting_steps, 0);
+  EXPECT_EQ(skipped.stateHash(), full.stateHash());
+  for (int f = 0; f < 300; ++f) {
+    skipped.step(kUp);
+    full.step(kUp);
+  }
+  EXPECT_GT(skipped.car().speed, 1.0);
+  EXPECT_EQ(skipped.stateHash(), full.stateHash());
+  EXPECT_EQ(skipped.stats().broadphase_queries, full.stats().broadphase_queries);
+}
+
 TEST(WorldWork, BroadPhaseIsBuiltOnce) {
   World world(test::parkingLot(19));
   EXPECT_EQ(world.stats().broadphase_builds, 1);
