@@ -285,11 +285,14 @@ bool overlapObb3(const Obb3& a, const Obb3& b) {
 double frameDefect(const Eigen::Matrix3d& m) {
   const double* c = m.data();  // column k at 3k
   double defect = 0.0;
+  double norms = 0.0;  // sum of the squared column norms: NaN or infinite iff some entry is
   staticFor<3>([&](auto kc) {
     constexpr int k = decltype(kc)::value, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
     staticFor<3 - k>([&](auto lc) {
       constexpr int l = k + decltype(lc)::value;
-      defect = std::max(defect, std::abs(dot3(c + 3 * k, c + 3 * l) - (k == l ? 1.0 : 0.0)));
+      const double g = dot3(c + 3 * k, c + 3 * l);
+      if constexpr (k == l) norms += g;
+      defect = std::max(defect, std::abs(g - (k == l ? 1.0 : 0.0)));
     });
     const double* u = c + 3 * k1;
     const double* v = c + 3 * k2;
@@ -297,10 +300,9 @@ double frameDefect(const Eigen::Matrix3d& m) {
     defect = std::max(defect, std::abs(u[2] * v[0] - u[0] * v[2] - c[3 * k + 1]));
     defect = std::max(defect, std::abs(u[0] * v[1] - u[1] * v[0] - c[3 * k + 2]));
   });
-  // std::max drops a NaN, so look for one (or an infinity) directly: x * 0 is NaN exactly then.
-  double poison = 0.0;
-  for (int e = 0; e < 9; ++e) poison += c[e] * 0.0;
-  return poison == 0.0 ? defect + 0x1p-51 : std::numeric_limits<double>::infinity();
+  // std::max drops a NaN; the norms keep it (and report overflowing entries as infinite too).
+  return norms < std::numeric_limits<double>::infinity() ? defect + 0x1p-51
+                                                         : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace cardemo
