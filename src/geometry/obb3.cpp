@@ -1,8 +1,11 @@
 #include "geometry/obb3.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "geometry/finite.hpp"
 
@@ -59,25 +62,121 @@ Eigen::Vector3d accurateCross(const Eigen::Vector3d& u, const Eigen::Vector3d& v
           diffOfProducts(u.x(), v.y(), u.y(), v.x())};
 }
 
-// The pair seen from A (Gottschalk et al., OBBTree, 1996; Ericson, RTCD 4.4.1).
+// The pair seen from A (Gottschalk et al., OBBTree, 1996; Ericson, RTCD 4.4.1), in plain arrays so
+// that the compiler keeps everything in registers.
 struct Pose3 {
-  Eigen::Vector3d d;     // cB - cA, world frame, subtracted in double first (STYLE 8)
-  Eigen::Vector3d ta;    // d in A's frame
-  Eigen::Vector3d tb;    // d in B's frame
-  Eigen::Matrix3d absR;  // |A^T B|: B's axes in A's frame, absolute values
+  Eigen::Vector3d d;  // cB - cA, world frame, subtracted in double first (STYLE 8)
+  double t[3];        // d in A's frame: a_k . d
+  double tb[3];       // d in B's frame: b_k . d
+  double r[3][3];     // A^T B: a_k . b_j
+  double absr[3][3];  // |A^T B|
+  double face[6];     // gaps on faces 0-2 of A and 0-2 of B
 };
 
-Pose3 relativePose(const Obb3& a, const Obb3& b) {
-  const Eigen::Vector3d d = b.center - a.center;
-  return {d, a.rotation.transpose() * d, b.rotation.transpose() * d,
-          (a.rotation.transpose() * b.rotation).cwiseAbs()};
+[[gnu::always_inline]] inline double dot3(const double* u, const double* v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
-// Gap on face axis k: 0-2 faces of A, 3-5 faces of B. The oracle's face normal is the cross product
-// of the other two stored columns, which differs from column k by ~1e-16 in direction: ~1e-14 m.
-double faceGap(const Obb3& a, const Obb3& b, const Pose3& p, int k) {
-  if (k < 3) return std::abs(p.ta[k]) - a.half[k] - p.absR.row(k).dot(b.half);
-  return std::abs(p.tb[k - 3]) - b.half[k - 3] - p.absR.col(k - 3).dot(a.half);
+// Calls f(std::integral_constant<int, K>{}) for K = 0, ..., N - 1: compile-time indices, so every
+// entry below is a named value the compiler keeps in a register (runtime loops over the 3x3 arrays
+// stay loops at -O2).
+template <class F, int... K>
+[[gnu::always_inline]] inline void forEach(const F& f, std::integer_sequence<int, K...>) {
+  (f(std::integral_constant<int, K>{}), ...);
+}
+
+template <int N, class F>
+[[gnu::always_inline]] inline void staticFor(const F& f) {
+  forEach(f, std::make_integer_sequence<int, N>{});
+}
+
+// Face gaps, 0-2 faces of A, 3-5 of B. The oracle's face normal is the cross product of the other
+// two stored columns, which differs from column k by ~1e-16 in direction: ~1e-14 m.
+[[gnu::always_inline]] inline Pose3 relativePose(const Obb3& a, const Obb3& b) {
+  Pose3 p;
+  p.d = b.center - a.center;
+  const double* ra = a.rotation.data();  // column-major: column k at 3k
+  const double* rb = b.rotation.data();
+  const double* ha = a.half.data();
+  const double* hb = b.half.data();
+  staticFor<3>([&](auto kc) {
+    constexpr int k = decltype(kc)::value;
+    p.t[k] = dot3(ra + 3 * k, p.d.data());
+    p.tb[k] = dot3(rb + 3 * k, p.d.data());
+    staticFor<3>([&](auto jc) {
+      constexpr int j = decltype(jc)::value;
+      p.r[k][j] = dot3(ra + 3 * k, rb + 3 * j);
+      p.absr[k][j] = std::abs(p.r[k][j]);
+    });
+  });
+  staticFor<3>([&](auto kc) {
+    constexpr int k = decltype(kc)::value;
+    p.face[k] = std::abs(p.t[k]) - ha[k] -
+                (p.absr[k][0] * hb[0] + p.absr[k][1] * hb[1] + p.absr[k][2] * hb[2]);
+    p.face[3 + k] = std::abs(p.tb[k]) - hb[k] -
+                    (p.absr[0][k] * ha[0] + p.absr[1][k] * ha[1] + p.absr[2][k] * ha[2]);
+  });
+  return p;
+}
+
+// The A-frame filter (the batch kernels' one, batch_kernels.hpp; docs/architecture.md, "Batch
+// kernels"). The edge axis a_i x b_j in A's frame is e_i x (A^T b_j): its gap needs only entries of
+// R = A^T B and t, a dozen operations instead of the accurate form's fifty (with six fma calls,
+// library calls on a build without -mfma). Against the gap on the stored columns' exact cross
+// product, which edgeGap below computes to a few ulps, its error is within `bound` (frameDefect
+// widens it); a gap beyond the bound has the accurate gap's sign, the others are recomputed
+// accurately, so every verdict is the accurate one. A normalised gap is within 2^-40 of the pair's
+// scale of the accurate one when the squared axis length clears `min_length2`.
+struct EdgeFilter {
+  double bound;        // on |gap times axis length|, metres
+  double min_length2;  // floor on the squared axis length for a normalised fast gap
+};
+
+EdgeFilter edgeFilter(const Obb3& a, const Obb3& b, const Pose3& p) {
+  constexpr double kU = 0x1p-53;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double phi = std::max(frameDefect(a.rotation), frameDefect(b.rotation));
+  if (!(phi <= 0x1p-30)) return {kInf, kInf};
+  // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
+  const double scale =
+      std::abs(p.d.x()) + std::abs(p.d.y()) + std::abs(p.d.z()) + a.half.sum() + b.half.sum();
+  const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
+  return {(32.0 * kU + 6.0 * phi) * scale, root * root};
+}
+
+// Edge axis a_i x b_j in A's frame: gap times axis length, and the squared length.
+struct FastEdge {
+  double gap;
+  double length2;
+};
+
+template <int I, int J>
+[[gnu::always_inline]] inline FastEdge fastEdge(const double* ha, const double* hb,
+                                                const Pose3& p) {
+  constexpr int i1 = (I + 1) % 3, i2 = (I + 2) % 3, j1 = (J + 1) % 3, j2 = (J + 2) % 3;
+  // e_i x r_j = r_{i1 j} e_{i2} - r_{i2 j} e_{i1}; its dot products with A's other axes are R
+  // entries of rows i2 and i1, with B's other axes entries of row i (B's columns j x j1 = j2).
+  const double along = p.t[i2] * p.r[i1][J] - p.t[i1] * p.r[i2][J];
+  const double ra = ha[i1] * p.absr[i2][J] + ha[i2] * p.absr[i1][J];
+  const double rb = hb[j1] * p.absr[I][j2] + hb[j2] * p.absr[I][j1];
+  return {std::abs(along) - ra - rb, p.r[i1][J] * p.r[i1][J] + p.r[i2][J] * p.r[i2][J]};
+}
+
+// fastEdge for all nine edge axes, e = 3i + j.
+[[gnu::always_inline]] inline void fastEdges(const Obb3& a, const Obb3& b, const Pose3& p,
+                                             FastEdge (&out)[9]) {
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value;
+    out[e] = fastEdge<e / 3, e % 3>(a.half.data(), b.half.data(), p);
+  });
+}
+
+// The world-frame unit axis of fastEdge (i, j), pointing from A towards B.
+Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose3& p, int i, int j) {
+  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+  const Eigen::Vector3d n = a.rotation.col(i2) * p.r[i1][j] - a.rotation.col(i1) * p.r[i2][j];
+  const double along = p.t[i2] * p.r[i1][j] - p.t[i1] * p.r[i2][j];
+  return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
 }
 
 // Edge-edge axis a_i x b_j.
@@ -117,31 +216,43 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
-  r.separation = faceGap(a, b, p, 0);
+  r.separation = p.face[0];
   for (int k = 1; k < 6; ++k) {
-    const double g = faceGap(a, b, p, k);
-    if (g > r.separation) {
-      r.separation = g;
+    if (p.face[k] > r.separation) {
+      r.separation = p.face[k];
       r.axis_index = k;
     }
   }
   if (r.axis_index < 3) {
     r.normal = a.rotation.col(r.axis_index);
-    if (p.ta[r.axis_index] < 0.0) r.normal = -r.normal;
+    if (p.t[r.axis_index] < 0.0) r.normal = -r.normal;
   } else {
     r.normal = b.rotation.col(r.axis_index - 3);
     if (p.tb[r.axis_index - 3] < 0.0) r.normal = -r.normal;
   }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      double g = 0.0;
-      Eigen::Vector3d axis;
-      if (!edgeGap(a, b, p.d, i, j, g, axis) || !(g > r.separation)) continue;
+  FastEdge fast[9];
+  fastEdges(a, b, p, fast);
+  const EdgeFilter filter = edgeFilter(a, b, p);
+  bool fast_winner = false;
+  for (int e = 0; e < 9; ++e) {
+    const FastEdge& f = fast[e];
+    if (std::abs(f.gap) > filter.bound && f.length2 > filter.min_length2) {
+      const double g = f.gap / std::sqrt(f.length2);
+      if (!(g > r.separation)) continue;
       r.separation = g;
-      r.axis_index = 6 + 3 * i + j;
-      r.normal = axis.dot(p.d) < 0.0 ? Eigen::Vector3d(-axis) : axis;
+      r.axis_index = 6 + e;
+      fast_winner = true;
+      continue;
     }
+    double g = 0.0;
+    Eigen::Vector3d axis;
+    if (!edgeGap(a, b, p.d, e / 3, e % 3, g, axis) || !(g > r.separation)) continue;
+    r.separation = g;
+    r.axis_index = 6 + e;
+    r.normal = axis.dot(p.d) < 0.0 ? Eigen::Vector3d(-axis) : axis;
+    fast_winner = false;
   }
+  if (fast_winner) r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
   r.hit = r.separation <= 0.0;
   assert(isFinite(r));
   return r;
@@ -150,17 +261,48 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
 bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
-  for (int k = 0; k < 6; ++k) {
-    if (faceGap(a, b, p, k) > 0.0) return false;
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      double g = 0.0;
-      Eigen::Vector3d axis;
-      if (edgeGap(a, b, p.d, i, j, g, axis) && g > 0.0) return false;
-    }
+  double face = p.face[0];
+  for (int k = 1; k < 6; ++k) face = std::max(face, p.face[k]);
+  if (face > 0.0) return false;
+  FastEdge fast[9];
+  fastEdges(a, b, p, fast);
+  double largest = fast[0].gap;
+  for (int e = 1; e < 9; ++e) largest = std::max(largest, fast[e].gap);
+  const EdgeFilter filter = edgeFilter(a, b, p);
+  if (largest > filter.bound) return false;
+  if (largest < -filter.bound) return true;
+  for (int e = 0; e < 9; ++e) {
+    if (fast[e].gap < -filter.bound) continue;
+    double g = 0.0;
+    Eigen::Vector3d axis;
+    if (edgeGap(a, b, p.d, e / 3, e % 3, g, axis) && g > 0.0) return false;
   }
   return true;
+}
+
+// Plain scalar code: Eigen's 3-vector expressions cost several times as much here, and this runs
+// for every pair that the face axes do not separate.
+double frameDefect(const Eigen::Matrix3d& m) {
+  const double* c = m.data();  // column k at 3k
+  double defect = 0.0;
+  double norms = 0.0;  // sum of the squared column norms: NaN or infinite iff some entry is
+  staticFor<3>([&](auto kc) {
+    constexpr int k = decltype(kc)::value, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    staticFor<3 - k>([&](auto lc) {
+      constexpr int l = k + decltype(lc)::value;
+      const double g = dot3(c + 3 * k, c + 3 * l);
+      if constexpr (k == l) norms += g;
+      defect = std::max(defect, std::abs(g - (k == l ? 1.0 : 0.0)));
+    });
+    const double* u = c + 3 * k1;
+    const double* v = c + 3 * k2;
+    defect = std::max(defect, std::abs(u[1] * v[2] - u[2] * v[1] - c[3 * k]));
+    defect = std::max(defect, std::abs(u[2] * v[0] - u[0] * v[2] - c[3 * k + 1]));
+    defect = std::max(defect, std::abs(u[0] * v[1] - u[1] * v[0] - c[3 * k + 2]));
+  });
+  // std::max drops a NaN; the norms keep it (and report overflowing entries as infinite too).
+  return norms < std::numeric_limits<double>::infinity() ? defect + 0x1p-51
+                                                         : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace cardemo

@@ -8,35 +8,13 @@
 #include "geometry/batch_path.hpp"
 
 namespace cardemo {
-namespace {
-
-// How far the columns m_k of a rotation are from an orthonormal right-handed frame: the largest
-// |m_k . m_l - delta_kl| and |(m_k1 x m_k2) - m_k| (each component, k1, k2 the next indices
-// cyclically), plus 4 ulps for the rounding of this very computation. The A-frame edge gaps of
-// the batch kernels are exact for exact rotations; their error grows with this defect
-// (docs/architecture.md, "Batch kernels"). About 2e-15 for rotations from fromQuaternion.
-double rotationDefect(const Eigen::Matrix3d& m) {
-  double defect = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    for (int l = k; l < 3; ++l) {
-      defect = std::max(defect, std::abs(m.col(k).dot(m.col(l)) - (k == l ? 1.0 : 0.0)));
-    }
-    const Eigen::Vector3d c = m.col((k + 1) % 3).cross(m.col((k + 2) % 3)) - m.col(k);
-    defect = std::max(defect, c.cwiseAbs().maxCoeff());
-  }
-  // NaN compares false everywhere: report it as infinite.
-  return defect >= 0.0 ? defect + 0x1p-51 : std::numeric_limits<double>::infinity();
-}
-
-}  // namespace
-
 Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
   for (auto* group : {&center_, &half_}) {
     for (std::vector<double>& v : *group) v.reserve(boxes.size());
   }
   for (std::vector<double>& v : rotation_) v.reserve(boxes.size());
   for (const Obb3& b : boxes) {
-    frame_defect_ = std::max(frame_defect_, rotationDefect(b.rotation));
+    frame_defect_ = std::max(frame_defect_, cardemo::frameDefect(b.rotation));
     for (int k = 0; k < 3; ++k) {
       center_[static_cast<std::size_t>(k)].push_back(b.center[k]);
       half_[static_cast<std::size_t>(k)].push_back(b.half[k]);
@@ -91,7 +69,7 @@ namespace {
 // (64U + 8 phi) / |axis| <= 2^-40 sets the floor on the squared axis length.
 void setFilter(const Obb3& a, const Obb3Batch& many, batch_detail::Box3One& one) {
   constexpr double kU = 0x1p-53;
-  const double phi = std::max(rotationDefect(a.rotation), many.frameDefect());
+  const double phi = std::max(frameDefect(a.rotation), many.frameDefect());
   if (!(phi <= 0x1p-30)) {
     one.edge_gap_error = std::numeric_limits<double>::infinity();
     one.min_edge_length2 = std::numeric_limits<double>::infinity();

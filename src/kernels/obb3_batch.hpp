@@ -30,7 +30,7 @@ class Obb3Batch {
   /// Raw arrays for the kernels.
   [[nodiscard]] batch_detail::Box3Arrays arrays() const;
   /// Largest departure of a stored rotation from an orthonormal right-handed frame
-  /// (obb3_batch.cpp, rotationDefect); it widens the error bound of the kernels' fast filter.
+  /// (cardemo::frameDefect in obb3.hpp); it widens the error bound of the kernels' fast filter.
   [[nodiscard]] double frameDefect() const { return frame_defect_; }
 
  private:

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -261,6 +262,111 @@ TEST(Obb3Sat, AxisIndexAndNormalOnSimpleCases) {
   r = collideObb3(tb, ta);
   EXPECT_EQ(r.axis_index, 6 + 3 * 1 + 0);
   EXPECT_NEAR((r.normal + Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-15);
+}
+
+// The A-frame filter of overlapObb3 and collideObb3 (obb3.cpp) decides an edge axis only when its
+// gap clears an error bound of about 1e-14 of the pair's scale, and recomputes the others
+// accurately. Pairs placed on an edge axis 1e-14..1e-9 m (times the scale) from touching land
+// inside and just outside that band; the verdict must be the oracle's wherever the accurate path
+// is sure (|sep| above 1e-13 of the scale), near the origin and 1e7 m out.
+TEST(Obb3FastPath, EdgeGapsAtTheErrorBoundMatchTheOracle) {
+  for (const double offset : {0.0, 1e7}) {
+    std::mt19937_64 rng(offset == 0.0 ? 0x0b3a0200 : 0x0b3a0201);
+    Tally t;
+    int in_band = 0;
+    int checked = 0;
+    const int n = test3::scaledCount(20000);
+    for (int k = 0; k < n; ++k) {
+      Pair3 p{Obb3::fromQuaternion({offset, -offset, 0.5 * offset}, test3::randomRotation(rng),
+                                   test3::randomSize(rng)),
+              Obb3::fromQuaternion({0, 0, 0}, test3::randomRotation(rng), test3::randomSize(rng))};
+      const Eigen::Vector3d axis = test3::candidateAxis(p.a, p.b, 6 + static_cast<int>(rng() % 9));
+      if (axis.isZero()) continue;
+      const double scale = p.a.half.sum() + p.b.half.sum();
+      const double gap = test3::randomSign(rng) * scale * test3::logUniform(rng, 1e-14, 1e-9);
+      test3::placeAtGap(p.a, p.b, axis * test3::randomSign(rng), gap);
+      const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
+      const double sure = 1e-13 * (scale + (p.b.center - p.a.center).lpNorm<1>());
+      in_band += std::abs(ex.separation) < 1e3 * sure ? 1 : 0;
+      if (!(std::abs(ex.separation) > sure)) continue;
+      ++checked;
+      checkPair(p, t, true, &ex);
+    }
+    std::printf("[ fast-path band, offset %g m ] %d checked, %d within 1e-10 of the scale\n",
+                offset, checked, in_band);
+    EXPECT_GT(in_band, n / 20) << "too few pairs near the filter's error bound";
+    EXPECT_GT(checked, n / 2);
+    EXPECT_EQ(t.failures, 0) << offset;
+  }
+}
+
+// Degenerate boxes (one, two or three half extents zero: a plate, a segment, a point) against
+// random boxes and each other; strict verdicts wherever the accurate path is sure.
+TEST(Obb3FastPath, DegenerateBoxesMatchTheOracle) {
+  std::mt19937_64 rng(0x0b3a0202);
+  Tally t;
+  const int n = test3::scaledCount(20000);
+  for (int k = 0; k < n; ++k) {
+    Pair3 p = test3::gapPair(rng);
+    const int flat = static_cast<int>(rng() % 8);  // bit m: zero half extent m of one box
+    Obb3& box = rng() % 2 == 0 ? p.a : p.b;
+    for (int m = 0; m < 3; ++m) {
+      if ((flat >> m) & 1) box.half[m] = 0.0;
+    }
+    const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
+    const double scale = p.a.half.sum() + p.b.half.sum() + (p.b.center - p.a.center).lpNorm<1>();
+    checkPair(p, t, std::abs(ex.separation) > 1e-13 * scale, &ex);
+  }
+  EXPECT_EQ(t.failures, 0);
+}
+
+// Stored matrices off a rotation by 1e-12 (the filter's bound widens with frameDefect) and by 1e-9
+// (past 2^-30: the filter is off and every edge axis takes the accurate path).
+TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
+  for (const double eps : {1e-12, 1e-9}) {
+    std::mt19937_64 rng(eps < 1e-10 ? 0x0b3a0203 : 0x0b3a0205);
+    Tally t;
+    const int n = test3::scaledCount(20000);
+    for (int k = 0; k < n; ++k) {
+      Pair3 p = test3::gapPair(rng);
+      for (Obb3* box : {&p.a, &p.b}) {
+        for (int e = 0; e < 9; ++e) box->rotation(e / 3, e % 3) += eps * test3::uniform(rng, -1, 1);
+      }
+      const double phi = std::max(frameDefect(p.a.rotation), frameDefect(p.b.rotation));
+      ASSERT_GT(phi, 0.1 * eps);
+      ASSERT_LT(phi, 10.0 * eps);
+      // checkPair but for the unit normal: a face normal is the stored column, 1e-9 off unit.
+      const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
+      ++t.cases;
+      for (const auto& [x, y] : {std::pair{&p.a, &p.b}, std::pair{&p.b, &p.a}}) {
+        const SatResult3 r = collideObb3(*x, *y);
+        if (!(std::abs(r.separation - ex.separation) <= kSepTolerance))
+          t.fail("separation", *x, *y);
+        if (std::abs(ex.separation) > kHitTolerance && r.hit != ex.hit) t.fail("hit", *x, *y);
+        if (overlapObb3(*x, *y) != r.hit) t.fail("overlapObb3 disagrees", *x, *y);
+      }
+    }
+    EXPECT_EQ(t.failures, 0) << eps;
+    EXPECT_EQ(t.cases, n);
+  }
+}
+
+TEST(Obb3FastPath, FrameDefectOfRotationsAReflectionAndNaN) {
+  std::mt19937_64 rng(0x0b3a0204);
+  for (int k = 0; k < 1000; ++k) {
+    const Obb3 box = Obb3::fromQuaternion({0, 0, 0}, test3::randomRotation(rng), {1, 1, 1});
+    const double phi = frameDefect(box.rotation);
+    ASSERT_GT(phi, 0.0);  // never below the 4 ulps of its own rounding
+    ASSERT_LT(phi, 1e-14);
+  }
+  Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity();
+  reflection(2, 2) = -1.0;  // orthonormal but left-handed
+  EXPECT_GE(frameDefect(reflection), 2.0);
+  Eigen::Matrix3d nan = Eigen::Matrix3d::Identity();
+  nan(1, 0) = std::nan("");
+  EXPECT_EQ(frameDefect(nan), std::numeric_limits<double>::infinity());
+  nan(1, 0) = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(frameDefect(nan), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace
