@@ -170,7 +170,7 @@ Row run(const std::vector<Approach>& cases, double hz, CollisionDetection mode) 
   Row row;
   WorldSettings settings;
   settings.hz = hz;
-  settings.collision = mode;
+  settings.schemes.collision = mode;
   std::int64_t steps = 0;
   double ns = 0.0;
   for (const Approach& a : cases) {

@@ -23,8 +23,7 @@ struct ReplayOptions {
   std::string json_path;
   std::string trace_path;
   bool print_expect = false;
-  BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;
-  CollisionDetection collision = CollisionDetection::kContinuous;
+  SimulationSchemes schemes;
 };
 
 constexpr std::size_t kMaxHitsShown = 12;
@@ -100,8 +99,7 @@ int runReplayCommand(const ReplayOptions& options) {
     return 2;
   }
   WorldSettings settings = settingsForReplay(replay.value());
-  settings.broad_phase_box = options.broad_phase_box;
-  settings.collision = options.collision;
+  settings.schemes = options.schemes;
   World world(std::move(scene).value(), settings);
 
   std::unique_ptr<AtomicStream> trace;
@@ -173,7 +171,7 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
   sub->add_option("--trace", options->trace_path, "Write a CSV with one row per frame to FILE");
   const std::map<std::string, BroadPhaseBox> boxes{
       {"tight", BroadPhaseBox::kTight}, {"rotation-proof", BroadPhaseBox::kRotationProof}};
-  sub->add_option("--broadphase-box", options->broad_phase_box,
+  sub->add_option("--broadphase-box", options->schemes.broad_phase_box,
                   "Player box for broad-phase queries: tight (default) or rotation-proof (the seed "
                   "demo's box around the circumscribed circle), to compare their candidate counts")
       ->transform(CLI::CheckedTransformer(boxes, CLI::ignore_case));
@@ -181,7 +179,7 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
       {"continuous", CollisionDetection::kContinuous},
       {"substepped", CollisionDetection::kSubstepped},
       {"discrete", CollisionDetection::kDiscrete}};
-  sub->add_option("--collision", options->collision,
+  sub->add_option("--collision", options->schemes.collision,
                   "Fast-motion collision detection: continuous (default: swept to the time of "
                   "impact), substepped (sub-poses half the car's width apart) or discrete (one "
                   "test per step; fast cars tunnel)")

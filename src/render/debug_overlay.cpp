@@ -63,8 +63,7 @@ void drawCounters(Canvas& canvas, const World& world, const OverlayPalette& pale
 
 Aabb2 broadPhaseBox(const World& world) {
   const Obb2 box = world.carBox();
-  return world.settings().broad_phase_box == BroadPhaseBox::kRotationProof ? box.rotationProofAabb()
-                                                                           : box.aabb();
+  return queryBox(box, box.aabb(), world.settings().schemes.broad_phase_box);
 }
 
 void drawDebugOverlay(Canvas& canvas, const World& world, const Camera& camera,

@@ -18,57 +18,6 @@ double approach(double value, double target, double max_delta) {
   return value;
 }
 
-// Speed after the driver's command (throttle, brake, reverse) over one step.
-double commandedSpeed(double v, const InputFrame& in, const CarParams& p, double dt) {
-  const double brake = p.brake_decel * dt;
-  if (in.handbrake) return approach(v, 0.0, p.handbrake_decel * dt);
-  if (in.up && in.down) return approach(v, 0.0, brake);
-  if (in.up) {
-    if (v < 0.0) return approach(v, 0.0, brake);
-    // At or beyond the speed cap (possibly from the scene's initial speed): the engine stops.
-    if (v >= p.max_speed) return v;
-    return std::min(v + p.engine_accel * dt, p.max_speed);
-  }
-  if (in.down) {
-    if (v > 0.0) return approach(v, 0.0, brake);
-    // Already beyond the reverse limit (an initial speed from the scene): leave it to drag.
-    if (v <= -p.max_reverse_speed) return v;
-    return std::max(v - p.reverse_accel * dt, -p.max_reverse_speed);
-  }
-  return approach(v, 0.0, p.engine_brake * dt);
-}
-
-// Speed after drag (a = -drag v |v|) and rolling resistance; resistance stops the car, it never
-// reverses it.
-double resistedSpeed(double v, const CarParams& p, double dt) {
-  if (v == 0.0) return v;
-  const double magnitude = std::abs(v);
-  const double loss = (p.drag * magnitude * magnitude + p.rolling_resistance) * dt;
-  if (loss >= magnitude) return 0.0;
-  return v > 0.0 ? v - loss : v + loss;
-}
-
-// The product's original update, kept bit for bit: command, then resistance (operator splitting),
-// then the new speed drives this step's rotation and translation.
-CarState stepSemiImplicitEuler(const CarState& steered, const InputFrame& input,
-                               const CarParams& params, double dt) {
-  CarState next = steered;
-  next.speed = resistedSpeed(commandedSpeed(steered.speed, input, params, dt), params, dt);
-
-  // Kinematic bicycle model, reference point moving along the heading (no slip):
-  // yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2).
-  const double yaw_rate = next.speed * std::tan(next.steer) / params.wheelbase;
-  next.heading = wrapRadians(steered.heading + yaw_rate * dt);
-  // Recomputed from the angle only when it changed: an exact axis-aligned start direction from
-  // unitFromDegrees survives straight driving, and the direction can never drift off unit length.
-  if (next.heading != steered.heading) next.direction = unitFromRadians(next.heading);
-
-  const double distance = next.speed * dt;
-  next.position.x() = steered.position.x() + next.direction.x() * distance;
-  next.position.y() = steered.position.y() + next.direction.y() * distance;
-  return next;
-}
-
 }  // namespace
 
 double steeringLock(const CarParams& params, double speed) {
@@ -143,19 +92,20 @@ CarState integrateCar(const CarState& state, const InputFrame& input, const CarP
   }
   steered.steer = approach(state.steer, target, params.steer_rate * dt);
 
+  const SpeedLaw law = speedLawFor(state.speed, input, params);
   CarState next;
   switch (params.integrator) {
-    case CarIntegrator::kExplicitEuler:
-      next = stepExplicitEuler(steered, speedLawFor(state.speed, input, params), params, dt);
+    case CarIntegrator::kArcRk4:  // the game's
+      next = stepArcRk4(steered, law, params, dt);
       break;
     case CarIntegrator::kRk4:
-      next = stepRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+      next = stepRk4(steered, law, params, dt);
       break;
-    case CarIntegrator::kArcRk4:
-      next = stepArcRk4(steered, speedLawFor(state.speed, input, params), params, dt);
+    case CarIntegrator::kExplicitEuler:
+      next = stepExplicitEuler(steered, law, params, dt);
       break;
     case CarIntegrator::kSemiImplicitEuler:
-      next = stepSemiImplicitEuler(steered, input, params, dt);
+      next = stepSemiImplicitEuler(steered, law, params, dt);
       break;
   }
   // Lie splitting (Hairer, Lubich and Wanner, "Geometric Numerical Integration", 2nd ed., sec.

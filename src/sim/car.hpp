@@ -6,18 +6,9 @@
 
 #include "geometry/obb2.hpp"
 #include "sim/input_frame.hpp"
+#include "sim/simulation_schemes.hpp"
 
 namespace cardemo {
-
-/// How integrateCar advances the car's ODE over one step (inputs held within the step).
-/// docs/performance.md ("Run time against error") measures each against closed forms.
-enum class CarIntegrator {
-  kSemiImplicitEuler,  ///< Speed first, then heading and position from the new values (order 1).
-  kExplicitEuler,      ///< Heading, position and speed all from the start of the step (order 1).
-  kRk4,                ///< Classical Runge-Kutta over (x, y, heading, speed) (order 4).
-  kArcRk4,  ///< Speed and distance by RK4; the step follows the exact arc of its constant
-            ///< curvature.
-};
 
 /// Tunable car parameters; defaults suit a 4.5 m family car.
 struct CarParams {

@@ -26,6 +26,16 @@ void setHeading(CarState& next, const CarState& start, double unwrapped) {
   next.direction = directionAt(start, next.heading);
 }
 
+// Speed after drag (a = -drag v |v|) and rolling resistance; resistance stops the car, it never
+// reverses it.
+double resistedSpeed(double v, const CarParams& p, double dt) {
+  if (v == 0.0) return v;
+  const double magnitude = std::abs(v);
+  const double loss = (p.drag * magnitude * magnitude + p.rolling_resistance) * dt;
+  if (loss >= magnitude) return 0.0;
+  return v > 0.0 ? v - loss : v + loss;
+}
+
 }  // namespace
 
 double SpeedLaw::rate(double v) const {
@@ -55,7 +65,6 @@ SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& par
   law.rolling = params.rolling_resistance;
   law.travel = speed > 0.0 ? 1.0 : (speed < 0.0 ? -1.0 : 0.0);
   const double brake = -law.travel * params.brake_decel;  // toward zero
-  // The same modes as the semi-implicit update (car.cpp, commandedSpeed).
   if (input.handbrake) {
     law.command = -law.travel * params.handbrake_decel;
   } else if (input.up && input.down) {
@@ -86,6 +95,39 @@ SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& par
     law.command = -law.travel * params.engine_brake;
   }
   return law;
+}
+
+double SpeedLaw::commandedSpeed(double v, double dt) const {
+  if (capped) {
+    const double pushed = v + command * dt;
+    return travel > 0.0 ? std::min(pushed, limit) : std::max(pushed, limit);
+  }
+  // Braking, engine braking or the handbrake: toward zero, landing on it exactly.
+  const double max_delta = std::abs(command) * dt;
+  if (v < 0.0) return std::min(v + max_delta, 0.0);
+  if (v > 0.0) return std::max(v - max_delta, 0.0);
+  return v;
+}
+
+CarState stepSemiImplicitEuler(const CarState& steered, const SpeedLaw& law,
+                               const CarParams& params, double dt) {
+  // The product's original update, kept bit for bit: command, then resistance (operator
+  // splitting), then the new speed drives this step's rotation and translation.
+  CarState next = steered;
+  next.speed = resistedSpeed(law.commandedSpeed(steered.speed, dt), params, dt);
+
+  // Kinematic bicycle model, reference point moving along the heading (no slip):
+  // yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2).
+  const double yaw_rate = next.speed * std::tan(next.steer) / params.wheelbase;
+  next.heading = wrapRadians(steered.heading + yaw_rate * dt);
+  // Recomputed from the angle only when it changed: an exact axis-aligned start direction from
+  // unitFromDegrees survives straight driving, and the direction can never drift off unit length.
+  if (next.heading != steered.heading) next.direction = unitFromRadians(next.heading);
+
+  const double distance = next.speed * dt;
+  next.position.x() = steered.position.x() + next.direction.x() * distance;
+  next.position.y() = steered.position.y() + next.direction.y() * distance;
+  return next;
 }
 
 CarState stepExplicitEuler(const CarState& steered, const SpeedLaw& law, const CarParams& params,

@@ -1,6 +1,7 @@
 #pragma once
-/// The car's integrators other than semi-implicit Euler: the continuous speed law of one step and
-/// the explicit Euler, RK4 and exact-arc updates built on it (integrateCar picks one).
+/// The car's integrators: the speed law of one step (the driver's mode, chosen once) and the
+/// semi-implicit Euler, explicit Euler, RK4 and exact-arc updates built on it (integrateCar picks
+/// one).
 
 #include "sim/car.hpp"
 #include "sim/input_frame.hpp"
@@ -28,10 +29,18 @@ struct SpeedLaw {
   [[nodiscard]] double alongTravel(double v) const;
   /// The speed at the end of a step: along the travel and within the reverse cap (m/s).
   [[nodiscard]] double endSpeed(double v) const;
+  /// The command alone as one explicit step from `v` over `dt` (semi-implicit Euler's first
+  /// half): clamped at `limit` when capped, else toward zero, stopping exactly on it.
+  [[nodiscard]] double commandedSpeed(double v, double dt) const;
 };
 
 /// The speed law of one step from the speed at its start (m/s) and the keys held.
 [[nodiscard]] SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params);
+
+/// Semi-implicit Euler (the product's original update, kept bit for bit): the command, then drag
+/// and rolling resistance, give the new speed, which then drives the heading and the position.
+[[nodiscard]] CarState stepSemiImplicitEuler(const CarState& steered, const SpeedLaw& law,
+                                             const CarParams& params, double dt);
 
 /// Explicit Euler: heading, position and speed all advance with the derivatives at the start of
 /// the step. `steered` is the state at the start with the step's steering angle already set.

@@ -123,8 +123,7 @@ void World::detect() {
     return;
   }
   const Aabb2 bounds = box.aabb();
-  const Aabb2 query =
-      settings_.broad_phase_box == BroadPhaseBox::kTight ? bounds : box.rotationProofAabb();
+  const Aabb2 query = queryBox(box, bounds, settings_.schemes.broad_phase_box);
   if (have_query_ && sameAabb(query, last_query_box_)) {
     ++stats_.skipped_queries;
     // Reused candidates still feed the narrow phase, so they are counted as candidates again.
@@ -193,7 +192,7 @@ void World::mergeDetected() {
 
 void World::moveWithSubsteps(const CarState& start, const CarState& next) {
   const double dt = 1.0 / settings_.hz;
-  const double limit = 0.5 * std::min(params_.length, params_.width);
+  const double limit = half_min_extent_;
   const double motion = std::sqrt(next.speed * next.speed + next.slip * next.slip) * dt;
   std::int64_t n = 1;
   // Continuous safety: no sub-step moves the car by more than half its smaller extent, so it
@@ -230,9 +229,9 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
                                   const Eigen::Vector2d& displacement) {
   // One query with the box swept over the whole motion (start merged with end: a translating box
   // stays inside the hull of its two ends).
-  const Aabb2 query = settings_.broad_phase_box == BroadPhaseBox::kTight
-                          ? box.aabb().merged(end_box.aabb())
-                          : box.rotationProofAabb().merged(end_box.rotationProofAabb());
+  const BroadPhaseBox kind = settings_.schemes.broad_phase_box;
+  const Aabb2 query =
+      queryBox(box, box.aabb(), kind).merged(queryBox(end_box, end_box.aabb(), kind));
   grid_.query(query, candidates_);
   last_query_box_ = query;
   have_query_ = true;
@@ -335,8 +334,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
 
 void World::detectWithinSweep(const Obb2& box) {
   const Aabb2 bounds = box.aabb();
-  const Aabb2 query =
-      settings_.broad_phase_box == BroadPhaseBox::kTight ? bounds : box.rotationProofAabb();
+  const Aabb2 query = queryBox(box, bounds, settings_.schemes.broad_phase_box);
   if (!last_query_box_.contains(query)) {
     detect();
     return;
@@ -486,16 +484,16 @@ void World::step(const InputFrame& input) {
   contacts_.clear();
   contact_speed_.clear();
   contact_fraction_ = 1.0;
-  switch (settings_.collision) {
-    case CollisionDetection::kDiscrete:
-      car_ = next;
-      detect();
+  switch (settings_.schemes.collision) {
+    case CollisionDetection::kContinuous:  // the game's
+      moveContinuous(start, next);
       break;
     case CollisionDetection::kSubstepped:
       moveWithSubsteps(start, next);
       break;
-    case CollisionDetection::kContinuous:
-      moveContinuous(start, next);
+    case CollisionDetection::kDiscrete:
+      car_ = next;
+      detect();
       break;
   }
   mergeDetected();

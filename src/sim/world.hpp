@@ -10,27 +10,14 @@
 #include "sim/car.hpp"
 #include "sim/input_frame.hpp"
 #include "sim/scene.hpp"
+#include "sim/simulation_schemes.hpp"
 
 namespace cardemo {
 
-/// Which box of the player feeds the broad phase.
-enum class BroadPhaseBox {
-  kTight,          ///< Tight AABB of the current OBB (default).
-  kRotationProof,  ///< The seed demo's box around the circumscribed circle.
-};
-
-/// How the player's motion within a step is checked against the static colliders.
-enum class CollisionDetection {
-  kDiscrete,    ///< One test at the end pose of each step: fast motion can pass through things.
-  kSubstepped,  ///< Sub-poses at most half the car's smaller extent apart (the former scheme).
-  kContinuous,  ///< Swept SAT to the first time of impact when the step moves fast (default).
-};
-
 /// World settings; defaults are the game's.
 struct WorldSettings {
-  double hz = 120.0;  ///< Fixed steps per second.
-  CarParams car;      ///< Car tuning (length/width come from the scene).
-  BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;  ///< Player box used for queries.
+  double hz = 120.0;    ///< Fixed steps per second.
+  CarParams car;        ///< Car tuning (length/width come from the scene).
   int damage_min = 3;   ///< Damage of the gentlest hit that does damage at all.
   int damage_max = 50;  ///< Damage of the hardest hit.
   double damage_per_mps =
@@ -41,10 +28,10 @@ struct WorldSettings {
   double scrape_threshold = 1.0;  ///< Sliding along a collider faster than this (m/s) scrapes.
   double scrape_damage_per_s = 4.0;  ///< Damage per second of scraping (whole points, exact).
   int max_push_iterations = 4;       ///< Contact resolution passes per step.
-  double seam_depth = 0.05;  ///< A new contact that overlaps by at most this much (m) along the
-                             ///< normal of a collider touched at the last frame takes that normal:
-                             ///< the seam between two neighbours is not a wall.
-  CollisionDetection collision = CollisionDetection::kContinuous;  ///< Fast-motion scheme.
+  double seam_depth = 0.05;   ///< A new contact that overlaps by at most this much (m) along the
+                              ///< normal of a collider touched at the last frame takes that normal:
+                              ///< the seam between two neighbours is not a wall.
+  SimulationSchemes schemes;  ///< Alternatives for studies; the defaults are the game's.
 };
 
 /// A hit: the first frame of contact with one static collider.

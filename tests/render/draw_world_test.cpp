@@ -219,7 +219,7 @@ TEST(DrawWorld, DebugOverlayHighlightsCandidatesAndContacts) {
 
 TEST(DrawWorld, RotationProofBroadPhaseBoxIsTheOneShown) {
   WorldSettings settings;
-  settings.broad_phase_box = BroadPhaseBox::kRotationProof;
+  settings.schemes.broad_phase_box = BroadPhaseBox::kRotationProof;
   World world(sceneWith({}, 0.0, 0.0, 30.0), settings);
   const Aabb2 b = broadPhaseBox(world);
   EXPECT_EQ(b, world.carBox().rotationProofAabb());

@@ -58,7 +58,7 @@ std::string driveInto(const Target& target, double heading_deg, double speed, do
                       const Eigen::Vector2d& offset = Eigen::Vector2d::Zero()) {
   WorldSettings settings;
   settings.hz = hz;
-  settings.collision = mode;
+  settings.schemes.collision = mode;
   World world(test::translated(sceneFor(target, heading_deg, speed), offset), settings);
   std::ostringstream why;
   for (int f = 0; f < frames; ++f) {
@@ -203,8 +203,8 @@ TEST(WorldContinuous, SlowStepsTakeTheDiscretePathExactly) {
   // At ordinary speeds the three modes agree bit for bit and nothing is swept or sub-stepped.
   const Scene scene = test::parkingLot(13);
   WorldSettings continuous, substepped, discrete;
-  substepped.collision = CollisionDetection::kSubstepped;
-  discrete.collision = CollisionDetection::kDiscrete;
+  substepped.schemes.collision = CollisionDetection::kSubstepped;
+  discrete.schemes.collision = CollisionDetection::kDiscrete;
   World a(scene, continuous), b(scene, substepped), c(scene, discrete);
   for (const InputFrame& in : test::scriptedDrive(13, 3000)) {
     a.step(in);

@@ -229,7 +229,7 @@ TEST(World, StationaryCarSkipsBroadPhaseQueries) {
 TEST(World, RotationProofBoxGivesTheSameHitsWithMoreCandidates) {
   const Scene scene = test::parkingLot(11);
   WorldSettings proof;
-  proof.broad_phase_box = BroadPhaseBox::kRotationProof;
+  proof.schemes.broad_phase_box = BroadPhaseBox::kRotationProof;
   World tight(scene);
   World wide(scene, proof);
   for (const InputFrame& in : test::scriptedDrive(11, 4000)) {
