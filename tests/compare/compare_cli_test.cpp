@@ -14,10 +14,6 @@ namespace {
 
 using cardemo::test::CliResult;
 
-CliResult cardemo(const std::string& args, const std::string& stdin_text = "") {
-  return cardemo::test::runCardemo(args, stdin_text);
-}
-
 std::string replay(const std::string& name) {
   return std::string(CARDEMO_SOURCE_DIR) + "/assets/replays/" + name;
 }
@@ -27,12 +23,13 @@ std::filesystem::path writeTemp(const std::string& name, const std::string& text
 }
 
 TEST(CompareCli, HelpSucceeds) {
-  EXPECT_EQ(cardemo("compare --help").status, 0);
-  EXPECT_EQ(cardemo("compare-sweep --help").status, 0);
+  EXPECT_EQ(cardemo::test::runCardemo("compare --help").status, 0);
+  EXPECT_EQ(cardemo::test::runCardemo("compare-sweep --help").status, 0);
 }
 
 TEST(CompareCli, JsonHasTheContractFields) {
-  const CliResult r = cardemo("compare " + replay("head-on.replay") + " --json -");
+  const CliResult r =
+      cardemo::test::runCardemo("compare " + replay("head-on.replay") + " --json -");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_GT(j.at("frames").get<int>(), 0);
@@ -55,8 +52,8 @@ TEST(CompareCli, JsonHasTheContractFields) {
 
 TEST(CompareCli, RadiusIsReported) {
   const auto json = cardemo::test::scratchDir() / "out.json";
-  const CliResult r =
-      cardemo("compare " + replay("demo.replay") + " --radius 8 --json " + json.string());
+  const CliResult r = cardemo::test::runCardemo("compare " + replay("demo.replay") +
+                                                " --radius 8 --json " + json.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("within"), std::string::npos);
   EXPECT_EQ(nlohmann::json::parse(cardemo::test::slurp(json)).at("radius"), 8.0);
@@ -64,13 +61,15 @@ TEST(CompareCli, RadiusIsReported) {
 
 TEST(CompareCli, BadInputExitsTwoWithFileAndLine) {
   const auto bad = writeTemp("bad.replay", "cardemo-replay 1\nscene x.json\n5 Q\n");
-  const CliResult r = cardemo("compare " + bad.string() + " --scene " +
-                              std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/garage.json");
+  const CliResult r =
+      cardemo::test::runCardemo("compare " + bad.string() + " --scene " +
+                                std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/garage.json");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(bad.string() + ":3:"), std::string::npos) << r.err;
-  EXPECT_EQ(cardemo("compare /nonexistent.replay").status, 2);
-  EXPECT_EQ(cardemo("compare " + replay("demo.replay") + " --radius -1").status, 2);
-  EXPECT_EQ(cardemo("compare").status, 2);
+  EXPECT_EQ(cardemo::test::runCardemo("compare /nonexistent.replay").status, 2);
+  EXPECT_EQ(cardemo::test::runCardemo("compare " + replay("demo.replay") + " --radius -1").status,
+            2);
+  EXPECT_EQ(cardemo::test::runCardemo("compare").status, 2);
 }
 
 // A missing scene is reported on the replay line that names it, or as the option that names it.
@@ -78,10 +77,11 @@ TEST(CompareCli, MissingSceneIsReportedWhereItIsNamed) {
   const auto p = writeTemp("drive.replay", "cardemo-replay 1\nscene ../scenes/nope.json\n10 U\n");
   const std::string no_file = ": cannot open: No such file or directory\n";
   for (const char* command : {"compare ", "compare-world "}) {
-    const CliResult r = cardemo(command + p.string());
+    const CliResult r = cardemo::test::runCardemo(command + p.string());
     EXPECT_EQ(r.status, 2) << command;
     EXPECT_EQ(r.err, p.string() + ":2: scene ../scenes/nope.json" + no_file) << command;
-    const CliResult o = cardemo(command + replay("demo.replay") + " --scene /nonexistent/x.json");
+    const CliResult o =
+        cardemo::test::runCardemo(command + replay("demo.replay") + " --scene /nonexistent/x.json");
     EXPECT_EQ(o.status, 2) << command;
     EXPECT_EQ(o.err, "--scene /nonexistent/x.json" + no_file) << command;
   }
@@ -89,12 +89,12 @@ TEST(CompareCli, MissingSceneIsReportedWhereItIsNamed) {
 
 TEST(CompareCli, CollideOracleColumns) {
   const std::string rows = "-1,0,0,2,2,1,0,0,2,2\n0,0,0,2,2,5,0,0,2,2\n";
-  const CliResult r = cardemo("collide - --oracle exact,box2d", rows);
+  const CliResult r = cardemo::test::runCardemo("collide - --oracle exact,box2d", rows);
   ASSERT_EQ(r.status, 0) << r.err;
   // hit,sep,nx,ny,exact_hit,exact_sep,b2_overlap,b2_points
   EXPECT_EQ(r.out, "1,0,1,0,1,0,1,2\n0,3,1,0,0,3,0,0\n");
-  EXPECT_EQ(cardemo("collide - --oracle nope", rows).status, 2);
-  EXPECT_EQ(cardemo("collide - --dim 3 --oracle box2d", rows).status, 2);
+  EXPECT_EQ(cardemo::test::runCardemo("collide - --oracle nope", rows).status, 2);
+  EXPECT_EQ(cardemo::test::runCardemo("collide - --dim 3 --oracle box2d", rows).status, 2);
 }
 
 }  // namespace

@@ -13,13 +13,9 @@ namespace {
 
 using WorldRun = cardemo::test::CliResult;
 
-WorldRun cardemo(const std::string& args) {
-  return cardemo::test::runCardemo(args);
-}
-
 TEST(CompareWorldCli, HeadOnReportsLagAndClamp) {
-  const WorldRun r = cardemo("compare-world " + std::string(CARDEMO_SOURCE_DIR) +
-                             "/assets/replays/head-on.replay");
+  const WorldRun r = cardemo::test::runCardemo("compare-world " + std::string(CARDEMO_SOURCE_DIR) +
+                                               "/assets/replays/head-on.replay");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("lag"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("E1"), std::string::npos) << r.out;
@@ -28,7 +24,7 @@ TEST(CompareWorldCli, HeadOnReportsLagAndClamp) {
 }
 
 TEST(CompareWorldCli, MissingFileExitsTwo) {
-  EXPECT_EQ(cardemo("compare-world /nonexistent/missing.replay").status, 2);
+  EXPECT_EQ(cardemo::test::runCardemo("compare-world /nonexistent/missing.replay").status, 2);
 }
 
 }  // namespace

@@ -157,9 +157,9 @@ Shape randomShape(Random& rng, const Eigen::Vector2d& center, double lo, double 
   return s;
 }
 
-using PairMaker = std::function<std::pair<Shape, Shape>(Random&)>;
+using ShapePairMaker = std::function<std::pair<Shape, Shape>(Random&)>;
 
-PairStats runClass(std::uint64_t seed, const PairMaker& make, Failures& f) {
+PairStats runShapeClass(std::uint64_t seed, const ShapePairMaker& make, Failures& f) {
   return testing::runRandomClass(
       seed, make, f, [](const Shape& a, const Shape& b, int i, Failures& f, PairStats& stats) {
         const exact::ExactResult ex = oracle(a, b);
@@ -212,7 +212,7 @@ std::pair<Shape, Shape> nearTouching(Random& rng, const Eigen::Vector2d& base) {
 
 TEST(ConvexPolygonRandom, GapsOnBothSidesOfTouching) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runShapeClass(
       2001, [](Random& rng) { return nearTouching(rng, rng.direction() * rng.uniform(0, 100)); },
       f);
   testing::expectCleanClass(f, s);
@@ -222,7 +222,7 @@ TEST(ConvexPolygonRandom, GapsOnBothSidesOfTouching) {
 
 TEST(ConvexPolygonRandom, FarFromOrigin) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runShapeClass(
       2002,
       [](Random& rng) {
         const Eigen::Vector2d base = rng.farPoint(1e7);
@@ -239,7 +239,7 @@ TEST(ConvexPolygonRandom, FarFromOrigin) {
 
 TEST(ConvexPolygonRandom, Containment) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runShapeClass(
       2003,
       [](Random& rng) {
         const Eigen::Vector2d base = rng.farPoint(1e7);
@@ -266,7 +266,7 @@ TEST(ConvexPolygonRandom, Containment) {
 // 1/64 m grid every product in the test is exact, so the fast SAT must find sep == 0 too.
 TEST(ConvexPolygonRandom, ExactTouchingAtAVertex) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runShapeClass(
       2004,
       [](Random& rng) {
         const Eigen::Vector2d base{std::round(rng.uniform(-1e7, 1e7)),

@@ -83,9 +83,9 @@ void checkPair(const Pair3& p, Tally& t, bool strictHit = false,
 }
 
 // Runs `count` (scaled) cases of one generator and asserts no failures; prints the statistics.
-void runClass(const char* name, std::uint64_t seed,
-              const std::function<Pair3(std::mt19937_64&)>& gen, int count = kCasesPerClass,
-              bool strictHit = false) {
+void runBox3Class(const char* name, std::uint64_t seed,
+                  const std::function<Pair3(std::mt19937_64&)>& gen, int count = kCasesPerClass,
+                  bool strictHit = false) {
   std::mt19937_64 rng(seed);
   Tally t;
   const auto start = std::chrono::steady_clock::now();
@@ -102,37 +102,37 @@ void runClass(const char* name, std::uint64_t seed,
 }
 
 TEST(Obb3Random, GapsBothSidesOfTouching) {
-  runClass("gaps", 0x0b3a0001, test3::gapPair);
+  runBox3Class("gaps", 0x0b3a0001, test3::gapPair);
 }
 
 TEST(Obb3Random, FarFromOrigin) {
-  runClass("far", 0x0b3a0002, test3::farPair);
+  runBox3Class("far", 0x0b3a0002, test3::farPair);
 }
 
 TEST(Obb3Random, ExtremeSizesAndAspects) {
-  runClass("sizes", 0x0b3a0003, test3::sizePair);
+  runBox3Class("sizes", 0x0b3a0003, test3::sizePair);
 }
 
 TEST(Obb3Random, NearParallelEdges) {
-  runClass("near-parallel", 0x0b3a0004,
-           [](std::mt19937_64& rng) { return test3::nearParallelPair(rng); });
+  runBox3Class("near-parallel", 0x0b3a0004,
+               [](std::mt19937_64& rng) { return test3::nearParallelPair(rng); });
 }
 
 TEST(Obb3Random, ExactlyCoincident) {
-  runClass("coincident", 0x0b3a0005, test3::coincidentPair);
+  runBox3Class("coincident", 0x0b3a0005, test3::coincidentPair);
 }
 
 TEST(Obb3Random, ExactlyParallel) {
-  runClass("parallel", 0x0b3a0006, test3::parallelPair);
+  runBox3Class("parallel", 0x0b3a0006, test3::parallelPair);
 }
 
 TEST(Obb3Random, Containment) {
-  runClass("containment", 0x0b3a0007, test3::containmentPair);
+  runBox3Class("containment", 0x0b3a0007, test3::containmentPair);
 }
 
 TEST(Obb3Random, ExactTouchingAxisAligned) {
   // Exact touching must be a hit with separation exactly zero, not merely within 1e-6 m.
-  runClass("touching", 0x0b3a0008, test3::touchingPair, kCasesPerClass, true);
+  runBox3Class("touching", 0x0b3a0008, test3::touchingPair, kCasesPerClass, true);
   std::mt19937_64 rng(0x0b3a0009);
   for (int k = 0; k < 1000; ++k) {
     const Pair3 p = test3::touchingPair(rng);

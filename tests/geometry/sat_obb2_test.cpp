@@ -17,7 +17,7 @@ using testing::Failures;
 using testing::PairStats;
 using testing::Random;
 
-using PairMaker = std::function<std::pair<Obb2, Obb2>(Random&)>;
+using BoxPairMaker = std::function<std::pair<Obb2, Obb2>(Random&)>;
 
 Obb2 moved(Obb2 b, const Eigen::Vector2d& by) {
   b.center += by;
@@ -25,7 +25,7 @@ Obb2 moved(Obb2 b, const Eigen::Vector2d& by) {
 }
 
 // Compares collideObb2/overlapObb2 in both orders with the exact oracle over one class of pairs.
-PairStats runClass(std::uint64_t seed, const PairMaker& make, Failures& f) {
+PairStats runBoxClass(std::uint64_t seed, const BoxPairMaker& make, Failures& f) {
   return testing::runRandomClass(
       seed, make, f, [](const Obb2& a, const Obb2& b, int i, Failures& f, PairStats& stats) {
         const exact::ExactResult ex = exact::collideObb2(a, b);
@@ -98,7 +98,7 @@ TEST(SatObb2Random, GapsOnBothSidesOfTouching) {
   Failures f;
   int on_target = 0;
   int total = 0;
-  const PairStats s = runClass(
+  const PairStats s = runBoxClass(
       1001,
       [&](Random& rng) {
         const double gap = rng.sign() * rng.logUniform(1e-9, 1.0);
@@ -121,7 +121,7 @@ TEST(SatObb2Random, GapsOnBothSidesOfTouching) {
 
 TEST(SatObb2Random, FarFromOrigin) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runBoxClass(
       1002,
       [](Random& rng) {
         const Eigen::Vector2d base = rng.farPoint(1e7);
@@ -138,7 +138,7 @@ TEST(SatObb2Random, FarFromOrigin) {
 
 TEST(SatObb2Random, ExtremeSizesAndAspectRatios) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runBoxClass(
       1003,
       [](Random& rng) {
         const Eigen::Vector2d base = rng.direction() * rng.uniform(0, 1000);
@@ -158,7 +158,7 @@ TEST(SatObb2Random, ExtremeSizesAndAspectRatios) {
 
 TEST(SatObb2Random, NearParallel) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runBoxClass(
       1004,
       [](Random& rng) {
         Obb2 b = rng.box(Eigen::Vector2d::Zero(), 0.1, 100.0);
@@ -179,7 +179,7 @@ TEST(SatObb2Random, NearParallel) {
 
 TEST(SatObb2Random, Containment) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runBoxClass(
       1005,
       [](Random& rng) {
         const Eigen::Vector2d base = rng.direction() * rng.logUniform(1.0, 1e7);
@@ -200,7 +200,7 @@ TEST(SatObb2Random, Containment) {
 // Axis-aligned boxes on a 1/8 m grid touching along an edge or at a corner: exact in double.
 TEST(SatObb2Random, ExactTouching) {
   Failures f;
-  const PairStats s = runClass(
+  const PairStats s = runBoxClass(
       1006,
       [](Random& rng) {
         const auto grid = [&](int lo, int hi) { return rng.integer(lo, hi) / 8.0; };

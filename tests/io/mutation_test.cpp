@@ -13,7 +13,7 @@
 namespace cardemo {
 namespace {
 
-constexpr std::string_view kScene = R"({
+constexpr std::string_view kMutatedScene = R"({
   "format": "cardemo-scene/1",
   "name": "lot",
   "bounds": {"min": [-60, -40], "max": [60, 40]},
@@ -26,7 +26,7 @@ constexpr std::string_view kScene = R"({
 }
 )";
 
-constexpr std::string_view kReplay =
+constexpr std::string_view kMutatedReplay =
     "cardemo-replay 1\nscene ../lot.json\nhz 120\n# c\n240 U\n60 UL # t\n120 .\n"
     "expect health 85\nexpect hits 1\nexpect hit 233 A1\nexpect hash 9f3c0e1d2b4a6c58\n";
 
@@ -85,11 +85,11 @@ void fuzz(std::string_view valid, std::uint64_t seed, Parse parse) {
 }
 
 TEST(Mutation, SceneParserNeverCrashes) {
-  fuzz<Scene>(kScene, 1, [](std::string_view t) { return parseScene(t, "f"); });
+  fuzz<Scene>(kMutatedScene, 1, [](std::string_view t) { return parseScene(t, "f"); });
 }
 
 TEST(Mutation, ReplayParserNeverCrashes) {
-  fuzz<Replay>(kReplay, 2, [](std::string_view t) { return parseReplay(t, "f"); });
+  fuzz<Replay>(kMutatedReplay, 2, [](std::string_view t) { return parseReplay(t, "f"); });
 }
 
 TEST(Mutation, PairParsersNeverCrash) {

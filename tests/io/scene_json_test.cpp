@@ -39,16 +39,16 @@ constexpr std::string_view kScene = R"({
 }
 )";
 
-Parsed<Scene> parse(std::string_view text) {
+Parsed<Scene> parseSampleScene(std::string_view text) {
   return parseScene(text, "lot.json");
 }
 
-std::string with(std::string_view from, std::string_view to) {
+std::string sceneWith(std::string_view from, std::string_view to) {
   return replaced(std::string(kScene), from, to);
 }
 
 TEST(SceneJson, ValidSceneParsesIntoTheRightValues) {
-  const Parsed<Scene> p = parse(kScene);
+  const Parsed<Scene> p = parseSampleScene(kScene);
   ASSERT_TRUE(p.ok()) << p.error().toString();
   const Scene& s = p.value();
   EXPECT_EQ(s.name, "lot");
@@ -76,14 +76,14 @@ TEST(SceneJson, ValidSceneParsesIntoTheRightValues) {
 }
 
 TEST(SceneJson, Heading90GivesExactAxis) {
-  const Parsed<Scene> p = parse(kScene);
+  const Parsed<Scene> p = parseSampleScene(kScene);
   ASSERT_TRUE(p.ok());
   EXPECT_EQ(p.value().parked[0].box.axis, Eigen::Vector2d(0, 1));  // exact, not 6e-17
   EXPECT_EQ(p.value().parked[2].box.axis, Eigen::Vector2d(-1, 0));
 }
 
 TEST(SceneJson, ClockwiseObstacleIsStoredCounterClockwise) {
-  const Parsed<Scene> p = parse(kScene);
+  const Parsed<Scene> p = parseSampleScene(kScene);
   ASSERT_TRUE(p.ok());
   const ConvexPolygon& poly = p.value().obstacles[0].polygon;
   double twice_area = 0;
@@ -117,30 +117,33 @@ TEST(SceneJson, StdinSceneWithoutNameIsNamedScene) {
 }
 
 TEST(SceneJson, NegativeSpeedWithinLimitIsAccepted) {
-  const Parsed<Scene> p = parse(with("\"speed\": 3", "\"speed\": -1000"));
+  const Parsed<Scene> p = parseSampleScene(sceneWith("\"speed\": 3", "\"speed\": -1000"));
   ASSERT_TRUE(p.ok()) << p.error().toString();
   EXPECT_EQ(p.value().player.speed, -1000.0);
 }
 
 TEST(SceneJson, MaxSpeedIsOptionalAndPositive) {
-  EXPECT_EQ(parse(kScene).value().player.max_speed, std::numeric_limits<double>::infinity());
-  const Parsed<Scene> p = parse(with("\"speed\": 3", "\"speed\": 3, \"max_speed\": 5.5"));
+  EXPECT_EQ(parseSampleScene(kScene).value().player.max_speed,
+            std::numeric_limits<double>::infinity());
+  const Parsed<Scene> p =
+      parseSampleScene(sceneWith("\"speed\": 3", "\"speed\": 3, \"max_speed\": 5.5"));
   ASSERT_TRUE(p.ok()) << p.error().toString();
   EXPECT_EQ(p.value().player.max_speed, 5.5);
-  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": 3, \"max_speed\": 0")), 12,
-                      "player.max_speed: must be > 0"));
-  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": 3, \"max_speed\": 2000")), 12,
-                      "player.max_speed: must be finite with |speed| <= 1000"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"speed\": 3", "\"speed\": 3, \"max_speed\": 0")),
+                      12, "player.max_speed: must be > 0"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("\"speed\": 3", "\"speed\": 3, \"max_speed\": 2000")), 12,
+              "player.max_speed: must be finite with |speed| <= 1000"));
 }
 
 TEST(SceneJson, IntegralFloatHealthIsAccepted) {
-  const Parsed<Scene> p = parse(with("\"health\": 80", "\"health\": 8e1"));
+  const Parsed<Scene> p = parseSampleScene(sceneWith("\"health\": 80", "\"health\": 8e1"));
   ASSERT_TRUE(p.ok());
   EXPECT_EQ(p.value().player.health, 80);
 }
 
 TEST(SceneJson, ErrorStringNamesFileLineAndField) {
-  const Parsed<Scene> p = parse(with("\"width\": 2}", "\"width\": 0}"));
+  const Parsed<Scene> p = parseSampleScene(sceneWith("\"width\": 2}", "\"width\": 0}"));
   ASSERT_FALSE(p.ok());
   EXPECT_EQ(p.error().toString(), "lot.json:16: parked[1].width: must be finite and > 0");
 }
@@ -172,205 +175,221 @@ TEST(SceneJson, BundledLevelsHaveAGoalAndAnOrder) {
 // --- malformed input, one class per test ---
 
 TEST(SceneJsonErrors, EmptyFile) {
-  EXPECT_TRUE(failsAt(parse(""), 1, "empty scene file"));
+  EXPECT_TRUE(failsAt(parseSampleScene(""), 1, "empty scene file"));
 }
 
 TEST(SceneJsonErrors, WhitespaceOnlyFile) {
-  EXPECT_TRUE(failsAt(parse("\n \n\t\n"), 1, "empty scene file"));
+  EXPECT_TRUE(failsAt(parseSampleScene("\n \n\t\n"), 1, "empty scene file"));
 }
 
 TEST(SceneJsonErrors, GarbageBytes) {
-  EXPECT_TRUE(failsAt(parse("\xff\xfe\x01garbage"), 1, "invalid JSON"));
+  EXPECT_TRUE(failsAt(parseSampleScene("\xff\xfe\x01garbage"), 1, "invalid JSON"));
 }
 
 TEST(SceneJsonErrors, GarbageBytesOnALaterLine) {
-  EXPECT_TRUE(
-      failsAt(parse("{\n  \"format\": \"cardemo-scene/1\",\n  \xc3\x28\n}"), 3, "invalid JSON"));
+  EXPECT_TRUE(failsAt(parseSampleScene("{\n  \"format\": \"cardemo-scene/1\",\n  \xc3\x28\n}"), 3,
+                      "invalid JSON"));
 }
 
 TEST(SceneJsonErrors, InvalidUtf8InsideAString) {
-  EXPECT_TRUE(failsAt(parse(with("\"lot\"", "\"l\xff\"")), 3, "invalid JSON in name"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("\"lot\"", "\"l\xff\"")), 3, "invalid JSON in name"));
 }
 
 TEST(SceneJsonErrors, BinaryWithNulByte) {
   std::string text(kScene);
   text[text.find("\"A2\"")] = '\0';
-  EXPECT_TRUE(failsAt(parse(text), 16, "NUL byte"));
+  EXPECT_TRUE(failsAt(parseSampleScene(text), 16, "NUL byte"));
 }
 
 TEST(SceneJsonErrors, TruncatedJson) {
   const std::string text(kScene.substr(0, kScene.find("\"A2\"")));
-  EXPECT_TRUE(failsAt(parse(text), 16, "invalid JSON in parked[1]"));
+  EXPECT_TRUE(failsAt(parseSampleScene(text), 16, "invalid JSON in parked[1]"));
 }
 
 TEST(SceneJsonErrors, TruncatedAfterNewline) {
   const std::string text(kScene.substr(0, kScene.find("  \"parked\"")));
-  EXPECT_TRUE(failsAt(parse(text), 13, "unexpected end of input"));
+  EXPECT_TRUE(failsAt(parseSampleScene(text), 13, "unexpected end of input"));
 }
 
 TEST(SceneJsonErrors, DeepNesting) {
-  EXPECT_TRUE(failsAt(parse(std::string(100000, '[')), 1, "nesting deeper than 64"));
-  EXPECT_TRUE(failsAt(parse("\n" + std::string(100000, '{')), 2, "invalid JSON"));
+  EXPECT_TRUE(failsAt(parseSampleScene(std::string(100000, '[')), 1, "nesting deeper than 64"));
+  EXPECT_TRUE(failsAt(parseSampleScene("\n" + std::string(100000, '{')), 2, "invalid JSON"));
   EXPECT_TRUE(failsAt(
-      parse(with("\"x\": 1,", "\"x\": " + std::string(70, '[') + "1" + std::string(70, ']') + ",")),
+      parseSampleScene(sceneWith(
+          "\"x\": 1,", "\"x\": " + std::string(70, '[') + "1" + std::string(70, ']') + ",")),
       6, "nesting deeper than 64"));
 }
 
 TEST(SceneJsonErrors, NestingOf64IsNotANestingError) {
   const std::string text = std::string(64, '[') + std::string(64, ']');
-  EXPECT_TRUE(failsAt(parse(text), 1, "must be a JSON object, found an array"));
-  EXPECT_TRUE(failsAt(parse("[" + text + "]"), 1, "nesting deeper than 64"));
+  EXPECT_TRUE(failsAt(parseSampleScene(text), 1, "must be a JSON object, found an array"));
+  EXPECT_TRUE(failsAt(parseSampleScene("[" + text + "]"), 1, "nesting deeper than 64"));
 }
 
 TEST(SceneJsonErrors, NaNLiteral) {
-  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": NaN,")), 6, "invalid JSON in player.x"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"x\": 1,", "\"x\": NaN,")), 6,
+                      "invalid JSON in player.x"));
 }
 
 TEST(SceneJsonErrors, InfinityLiteral) {
-  EXPECT_TRUE(failsAt(parse(with("\"y\": 2,", "\"y\": Infinity,")), 7, "invalid JSON in player.y"));
-  EXPECT_TRUE(failsAt(parse(with("\"y\": 2,", "\"y\": -Infinity,")), 7, "invalid JSON"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"y\": 2,", "\"y\": Infinity,")), 7,
+                      "invalid JSON in player.y"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("\"y\": 2,", "\"y\": -Infinity,")), 7, "invalid JSON"));
 }
 
 TEST(SceneJsonErrors, HugeNumberIsNotFinite) {
-  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": 1e999,")), 6, "player.x: must be finite"));
-  EXPECT_TRUE(failsAt(parse(with("\"width\": 1.8,", "\"width\": -1e999,")), 10,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"x\": 1,", "\"x\": 1e999,")), 6,
+                      "player.x: must be finite"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"width\": 1.8,", "\"width\": -1e999,")), 10,
                       "player.width: must be finite"));
-  EXPECT_TRUE(
-      failsAt(parse(with("\"x\": 10,", "\"x\": 1e400,")), 15, "parked[0].x: must be finite"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"x\": 10,", "\"x\": 1e400,")), 15,
+                      "parked[0].x: must be finite"));
 }
 
 TEST(SceneJsonErrors, HugeIntegerLiteral) {
-  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": 99999999999999999999999,")), 6,
-                      "player.x: must be finite with |value| <= 1e9"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"x\": 1,", "\"x\": 99999999999999999999999,")),
+                      6, "player.x: must be finite with |value| <= 1e9"));
 }
 
 TEST(SceneJsonErrors, CoordinateTooLarge) {
-  EXPECT_TRUE(failsAt(parse(with("\"y\": 2,", "\"y\": -2e9,")), 7, "player.y: must be finite"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"y\": 2,", "\"y\": -2e9,")), 7,
+                      "player.y: must be finite"));
 }
 
 TEST(SceneJsonErrors, WrongFormatString) {
-  EXPECT_TRUE(failsAt(parse(with("cardemo-scene/1", "cardemo-scene/2")), 2,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("cardemo-scene/1", "cardemo-scene/2")), 2,
                       "format: expected \"cardemo-scene/1\", found \"cardemo-scene/2\""));
 }
 
 TEST(SceneJsonErrors, FormatOfWrongType) {
-  EXPECT_TRUE(failsAt(parse(with("\"cardemo-scene/1\"", "1")), 2,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"cardemo-scene/1\"", "1")), 2,
                       "format: expected a string, found a number"));
 }
 
 TEST(SceneJsonErrors, MissingFormat) {
-  EXPECT_TRUE(
-      failsAt(parse(with("  \"format\": \"cardemo-scene/1\",\n", "")), 1, "missing \"format\""));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("  \"format\": \"cardemo-scene/1\",\n", "")), 1,
+                      "missing \"format\""));
 }
 
 TEST(SceneJsonErrors, MissingPlayerField) {
-  EXPECT_TRUE(failsAt(parse(with("    \"y\": 2,\n", "")), 5, "player: missing \"y\""));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("    \"y\": 2,\n", "")), 5, "player: missing \"y\""));
 }
 
 TEST(SceneJsonErrors, MissingParked) {
-  EXPECT_TRUE(failsAt(parse(R"({"format": "cardemo-scene/1",
+  EXPECT_TRUE(failsAt(parseSampleScene(R"({"format": "cardemo-scene/1",
     "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8}})"),
                       1, "missing \"parked\""));
 }
 
 TEST(SceneJsonErrors, MissingPlayer) {
-  EXPECT_TRUE(failsAt(parse(R"({"format": "cardemo-scene/1"})"), 1, "missing \"player\""));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(R"({"format": "cardemo-scene/1"})"), 1, "missing \"player\""));
 }
 
 TEST(SceneJsonErrors, UnknownKeyTopLevel) {
-  EXPECT_TRUE(failsAt(parse(with("  \"name\": \"lot\",", "  \"name\": \"lot\",\n  \"nmae\": 1,")),
-                      4, "unknown key \"nmae\" in scene"));
+  EXPECT_TRUE(failsAt(
+      parseSampleScene(sceneWith("  \"name\": \"lot\",", "  \"name\": \"lot\",\n  \"nmae\": 1,")),
+      4, "unknown key \"nmae\" in scene"));
 }
 
 TEST(SceneJsonErrors, UnknownKeyNested) {
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"health\"", "\"helth\"")), 11,
+                      "unknown key \"helth\" in player"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"width\": 2}", "\"width\": 2, \"colour\": 1}")),
+                      16, "unknown key \"colour\" in parked[1]"));
   EXPECT_TRUE(
-      failsAt(parse(with("\"health\"", "\"helth\"")), 11, "unknown key \"helth\" in player"));
-  EXPECT_TRUE(failsAt(parse(with("\"width\": 2}", "\"width\": 2, \"colour\": 1}")), 16,
-                      "unknown key \"colour\" in parked[1]"));
-  EXPECT_TRUE(failsAt(parse(with("\"max\": [60, 40]", "\"max\": [60, 40], \"mid\": 0")), 4,
-                      "unknown key \"mid\" in bounds"));
-  EXPECT_TRUE(failsAt(parse(with("{\"id\": \"kerb\"", "{\"id\": \"kerb\", \"z\": 1")), 20,
-                      "unknown key \"z\" in obstacles[0]"));
+      failsAt(parseSampleScene(sceneWith("\"max\": [60, 40]", "\"max\": [60, 40], \"mid\": 0")), 4,
+              "unknown key \"mid\" in bounds"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("{\"id\": \"kerb\"", "{\"id\": \"kerb\", \"z\": 1")), 20,
+              "unknown key \"z\" in obstacles[0]"));
 }
 
 TEST(SceneJsonErrors, WrongType) {
-  EXPECT_TRUE(failsAt(parse(with("\"x\": 1,", "\"x\": \"1\",")), 6,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"x\": 1,", "\"x\": \"1\",")), 6,
                       "player.x: expected a number, found a string"));
-  EXPECT_TRUE(failsAt(parse(with("{\"min\": [-60, -40], \"max\": [60, 40]}", "[-60, 60]")), 4,
-                      "bounds: expected an object, found an array"));
-  EXPECT_TRUE(failsAt(parse(R"({"format": "cardemo-scene/1",
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("{\"min\": [-60, -40], \"max\": [60, 40]}", "[-60, 60]")),
+              4, "bounds: expected an object, found an array"));
+  EXPECT_TRUE(failsAt(parseSampleScene(R"({"format": "cardemo-scene/1",
       "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8},
       "parked": {}})"),
                       3, "parked: expected an array, found an object"));
-  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A3\"", "\"id\": 3")), 17,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"id\": \"A3\"", "\"id\": 3")), 17,
                       "parked[2].id: expected a string, found a number"));
-  EXPECT_TRUE(failsAt(parse(with("\"name\": \"lot\"", "\"name\": null")), 3,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"name\": \"lot\"", "\"name\": null")), 3,
                       "name: expected a string, found null"));
-  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": true")), 12,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"speed\": 3", "\"speed\": true")), 12,
                       "player.speed: expected a number, found a boolean"));
 }
 
 TEST(SceneJsonErrors, RootNotAnObject) {
-  EXPECT_TRUE(failsAt(parse("\n[1, 2]"), 2, "must be a JSON object"));
-  EXPECT_TRUE(failsAt(parse("\"scene\""), 1, "must be a JSON object, found a string"));
+  EXPECT_TRUE(failsAt(parseSampleScene("\n[1, 2]"), 2, "must be a JSON object"));
+  EXPECT_TRUE(failsAt(parseSampleScene("\"scene\""), 1, "must be a JSON object, found a string"));
 }
 
 TEST(SceneJsonErrors, NegativeLength) {
-  EXPECT_TRUE(failsAt(parse(with("\"length\": 4.5,\n", "\"length\": -4.5,\n")), 9,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"length\": 4.5,\n", "\"length\": -4.5,\n")), 9,
                       "player.length: must be finite and > 0"));
 }
 
 TEST(SceneJsonErrors, ZeroWidth) {
-  EXPECT_TRUE(failsAt(parse(with("\"width\": 1.8,", "\"width\": 0,")), 10,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"width\": 1.8,", "\"width\": 0,")), 10,
                       "player.width: must be finite and > 0"));
-  EXPECT_TRUE(failsAt(parse(with("\"width\": 2}", "\"width\": -0.0}")), 16,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"width\": 2}", "\"width\": -0.0}")), 16,
                       "parked[1].width: must be finite and > 0"));
 }
 
 TEST(SceneJsonErrors, AbsurdlyLongCar) {
-  EXPECT_TRUE(failsAt(parse(with("\"length\": 5,", "\"length\": 1e5,")), 17,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"length\": 5,", "\"length\": 1e5,")), 17,
                       "parked[2].length: must be at most 10000 m"));
 }
 
 TEST(SceneJsonErrors, DuplicateId) {
-  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"A1\"")), 16,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"id\": \"A2\"", "\"id\": \"A1\"")), 16,
                       "parked[1].id: duplicate id \"A1\" (also parked[0])"));
 }
 
 TEST(SceneJsonErrors, DuplicateIdAcrossObstacles) {
-  EXPECT_TRUE(failsAt(parse(with("\"id\": \"kerb\"", "\"id\": \"A3\"")), 20,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"id\": \"kerb\"", "\"id\": \"A3\"")), 20,
                       "obstacles[0].id: duplicate id \"A3\" (also parked[2])"));
 }
 
 TEST(SceneJsonErrors, EmptyOrUnprintableId) {
-  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"\"")), 16, "must not be empty"));
-  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"A\\n2\"")), 16,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"id\": \"A2\"", "\"id\": \"\"")), 16,
+                      "must not be empty"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"id\": \"A2\"", "\"id\": \"A\\n2\"")), 16,
                       "must not contain control characters"));
-  EXPECT_TRUE(failsAt(parse(with("\"id\": \"A2\"", "\"id\": \"A2 \"")), 16,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"id\": \"A2\"", "\"id\": \"A2 \"")), 16,
                       "must not start or end with a space"));
 }
 
 TEST(SceneJsonErrors, MissingId) {
-  EXPECT_TRUE(failsAt(parse(with("{\"id\": \"A3\", ", "{")), 17, "parked[2]: missing \"id\""));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("{\"id\": \"A3\", ", "{")), 17,
+                      "parked[2]: missing \"id\""));
 }
 
 TEST(SceneJsonErrors, DuplicateKey) {
-  EXPECT_TRUE(
-      failsAt(parse(with("\"y\": 2,", "\"y\": 2, \"x\": 3,")), 7, "duplicate key \"x\" in player"));
-  EXPECT_TRUE(
-      failsAt(parse(with("  \"name\": \"lot\",", "  \"name\": \"lot\",\n  \"name\": \"x\",")), 4,
-              "duplicate key \"name\" in scene"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"y\": 2,", "\"y\": 2, \"x\": 3,")), 7,
+                      "duplicate key \"x\" in player"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("  \"name\": \"lot\",",
+                                                 "  \"name\": \"lot\",\n  \"name\": \"x\",")),
+                      4, "duplicate key \"name\" in scene"));
 }
 
 TEST(SceneJsonErrors, NonConvexObstacle) {
-  EXPECT_TRUE(failsAt(
-      parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [4, 0], [4, 4], [2, 1], [0, 4]]")),
-      20, "obstacles[0].points: "));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("[[0, 0], [0, 1], [3, 1], [3, 0]]",
+                                                 "[[0, 0], [4, 0], [4, 4], [2, 1], [0, 4]]")),
+                      20, "obstacles[0].points: "));
 }
 
 TEST(SceneJsonErrors, DegenerateObstacle) {
-  EXPECT_TRUE(failsAt(parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [1, 1], [2, 2]]")),
-                      20, "obstacles[0].points: "));
+  EXPECT_TRUE(failsAt(
+      parseSampleScene(sceneWith("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [1, 1], [2, 2]]")),
+      20, "obstacles[0].points: "));
 }
 
 TEST(SceneJsonErrors, TooManyPoints) {
@@ -381,69 +400,73 @@ TEST(SceneJsonErrors, TooManyPoints) {
         (i ? ", [" : "[") + std::to_string(std::cos(a)) + ", " + std::to_string(std::sin(a)) + "]";
   }
   points += "]";
-  EXPECT_TRUE(failsAt(parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", points)), 20,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("[[0, 0], [0, 1], [3, 1], [3, 0]]", points)), 20,
                       "obstacles[0].points: expected 3 to 16 points, found 17"));
 }
 
 TEST(SceneJsonErrors, TooFewPoints) {
-  EXPECT_TRUE(failsAt(parse(with("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [0, 1]]")), 20,
-                      "expected 3 to 16 points, found 2"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(sceneWith("[[0, 0], [0, 1], [3, 1], [3, 0]]", "[[0, 0], [0, 1]]")),
+              20, "expected 3 to 16 points, found 2"));
 }
 
 TEST(SceneJsonErrors, PointNotAPair) {
-  EXPECT_TRUE(failsAt(parse(with("[3, 1]", "[3, 1, 2]")), 20,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("[3, 1]", "[3, 1, 2]")), 20,
                       "obstacles[0].points[2]: expected [x, y], found 3 values"));
-  EXPECT_TRUE(failsAt(parse(with("[3, 1]", "\"3, 1\"")), 20,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("[3, 1]", "\"3, 1\"")), 20,
                       "obstacles[0].points[2]: expected an array, found a string"));
 }
 
 TEST(SceneJsonErrors, BoundsMinNotBelowMax) {
-  EXPECT_TRUE(failsAt(parse(with("\"max\": [60, 40]", "\"max\": [60, -40]")), 4,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"max\": [60, 40]", "\"max\": [60, -40]")), 4,
                       "bounds: min must be less than max"));
-  EXPECT_TRUE(failsAt(parse(with("\"max\": [60, 40]", "\"max\": [-70, 40]")), 4,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"max\": [60, 40]", "\"max\": [-70, 40]")), 4,
                       "bounds: min must be less than max"));
 }
 
 TEST(SceneJsonErrors, BoundsMissingMax) {
-  EXPECT_TRUE(failsAt(parse(with(", \"max\": [60, 40]", "")), 4, "bounds: missing \"max\""));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith(", \"max\": [60, 40]", "")), 4,
+                      "bounds: missing \"max\""));
 }
 
 TEST(SceneJsonErrors, HealthZero) {
-  EXPECT_TRUE(
-      failsAt(parse(with("\"health\": 80", "\"health\": 0")), 11, "player.health: must be > 0"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"health\": 80", "\"health\": 0")), 11,
+                      "player.health: must be > 0"));
 }
 
 TEST(SceneJsonErrors, HealthNegative) {
-  EXPECT_TRUE(
-      failsAt(parse(with("\"health\": 80", "\"health\": -5")), 11, "player.health: must be > 0"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"health\": 80", "\"health\": -5")), 11,
+                      "player.health: must be > 0"));
 }
 
 TEST(SceneJsonErrors, HealthNotAnInteger) {
-  EXPECT_TRUE(failsAt(parse(with("\"health\": 80", "\"health\": 80.5")), 11,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"health\": 80", "\"health\": 80.5")), 11,
                       "player.health: must be an integer"));
 }
 
 TEST(SceneJsonErrors, HealthTooLarge) {
-  EXPECT_TRUE(failsAt(parse(with("\"health\": 80", "\"health\": 1000001")), 11,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"health\": 80", "\"health\": 1000001")), 11,
                       "player.health: must be at most 1000000"));
 }
 
 TEST(SceneJsonErrors, SpeedTooLarge) {
-  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3", "\"speed\": 1000.5")), 12,
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"speed\": 3", "\"speed\": 1000.5")), 12,
                       "player.speed: must be finite with |speed| <= 1000"));
 }
 
 TEST(SceneJsonErrors, CommentsAreNotJson) {
-  EXPECT_TRUE(failsAt(parse(with("  \"name\": \"lot\",", "  // a comment\n  \"name\": \"lot\",")),
-                      3, "invalid JSON"));
+  EXPECT_TRUE(failsAt(
+      parseSampleScene(sceneWith("  \"name\": \"lot\",", "  // a comment\n  \"name\": \"lot\",")),
+      3, "invalid JSON"));
 }
 
 TEST(SceneJsonErrors, TrailingData) {
-  EXPECT_TRUE(failsAt(parse(std::string(kScene) + "\n{}"), 24, "invalid JSON"));
+  EXPECT_TRUE(failsAt(parseSampleScene(std::string(kScene) + "\n{}"), 24, "invalid JSON"));
 }
 
 TEST(SceneJsonErrors, TrailingComma) {
-  EXPECT_TRUE(failsAt(parse(with("\"speed\": 3\n", "\"speed\": 3,\n")), 13, "invalid JSON"));
+  EXPECT_TRUE(failsAt(parseSampleScene(sceneWith("\"speed\": 3\n", "\"speed\": 3,\n")), 13,
+                      "invalid JSON"));
 }
 
 TEST(SceneJsonErrors, MissingFileReportsLineZero) {
@@ -479,7 +502,7 @@ constexpr std::string_view kGoal = R"(  "goal": {
   ])";
 
 TEST(SceneJsonGoal, FullGoalParsesIntoTheRightValues) {
-  const Parsed<Scene> p = parse(withGoal(kGoal));
+  const Parsed<Scene> p = parseSampleScene(withGoal(kGoal));
   ASSERT_TRUE(p.ok()) << p.error().toString();
   const Scene& s = p.value();
   ASSERT_TRUE(s.goal.has_value());
@@ -507,7 +530,7 @@ TEST(SceneJsonGoal, FullGoalParsesIntoTheRightValues) {
 }
 
 TEST(SceneJsonGoal, SceneWithoutGoalHasNone) {
-  const Parsed<Scene> p = parse(kScene);
+  const Parsed<Scene> p = parseSampleScene(kScene);
   ASSERT_TRUE(p.ok()) << p.error().toString();
   EXPECT_FALSE(p.value().goal.has_value());
   EXPECT_FALSE(p.value().level.has_value());
@@ -515,7 +538,7 @@ TEST(SceneJsonGoal, SceneWithoutGoalHasNone) {
 }
 
 TEST(SceneJsonGoal, OnlyTheBayIsRequired) {
-  const Parsed<Scene> p = parse(withGoal(
+  const Parsed<Scene> p = parseSampleScene(withGoal(
       R"(  "goal": {"bay": {"x": 1, "y": 2, "heading_deg": 0, "length": 5, "width": 2.5}})"));
   ASSERT_TRUE(p.ok()) << p.error().toString();
   const Goal& g = *p.value().goal;
@@ -533,52 +556,52 @@ std::string goalWith(std::string_view from, std::string_view to) {
 }
 
 TEST(SceneJsonGoalErrors, UnknownKeyInGoal) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"max_speed\"", "\"max_sped\"")), 27,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"max_speed\"", "\"max_sped\"")), 27,
                       "unknown key \"max_sped\" in goal"));
 }
 
 TEST(SceneJsonGoalErrors, UnknownKeyInBay) {
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("\"x\": 20", "\"xx\": 20")), 23, "unknown key \"xx\" in goal.bay"));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"x\": 20", "\"xx\": 20")), 23,
+                      "unknown key \"xx\" in goal.bay"));
 }
 
 TEST(SceneJsonGoalErrors, MissingBay) {
-  EXPECT_TRUE(failsAt(
-      parse(goalWith("\"bay\": {\"x\": 20, \"y\": -5, \"heading_deg\": 90, \"length\": 5.5, "
-                     "\"width\": 2.6},",
-                     "")),
-      22, "goal: missing \"bay\""));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith(
+                          "\"bay\": {\"x\": 20, \"y\": -5, \"heading_deg\": 90, \"length\": 5.5, "
+                          "\"width\": 2.6},",
+                          "")),
+                      22, "goal: missing \"bay\""));
 }
 
 TEST(SceneJsonGoalErrors, BayWidthZero) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 2.6", "\"width\": 0")), 23,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"width\": 2.6", "\"width\": 0")), 23,
                       "goal.bay.width: must be finite and > 0"));
 }
 
 TEST(SceneJsonGoalErrors, ToleranceZeroOrNegative) {
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("0.4", "0")), 24, "goal.position_tolerance: must be finite, > 0"));
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("0.4", "-1")), 24, "goal.position_tolerance: must be finite, > 0"));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("0.4", "0")), 24,
+                      "goal.position_tolerance: must be finite, > 0"));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("0.4", "-1")), 24,
+                      "goal.position_tolerance: must be finite, > 0"));
 }
 
 TEST(SceneJsonGoalErrors, HeadingToleranceAbove180) {
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("\"heading_tolerance_deg\": 6", "\"heading_tolerance_deg\": 181")), 25,
-              "goal.heading_tolerance_deg: must be finite, > 0 and at most 180"));
+  EXPECT_TRUE(failsAt(
+      parseSampleScene(goalWith("\"heading_tolerance_deg\": 6", "\"heading_tolerance_deg\": 181")),
+      25, "goal.heading_tolerance_deg: must be finite, > 0 and at most 180"));
 }
 
 TEST(SceneJsonGoalErrors, EitherDirectionMustBeBool) {
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("true", "1")), 26, "goal.either_direction: expected a boolean"));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("true", "1")), 26,
+                      "goal.either_direction: expected a boolean"));
 }
 
 TEST(SceneJsonGoalErrors, MaxSpeedAndTimesAreValidated) {
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("0.25", "\"slow\"")), 27, "goal.max_speed: expected a number"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 0")), 28,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("0.25", "\"slow\"")), 27,
+                      "goal.max_speed: expected a number"));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"par_time\": 15", "\"par_time\": 0")), 28,
                       "goal.par_time: must be finite, > 0"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"time_limit\": 60", "\"time_limit\": 1e6")), 29,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"time_limit\": 60", "\"time_limit\": 1e6")), 29,
                       "goal.time_limit: must be finite, > 0 and at most 100000 s"));
 }
 
@@ -618,37 +641,41 @@ TEST(SceneJsonGoalErrors, HoldTimeMustBeShorterThanTheTimeLimit) {
 }
 
 TEST(SceneJsonGoalErrors, ParTimeAboveTimeLimit) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"par_time\": 15", "\"par_time\": 61")), 28,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"par_time\": 15", "\"par_time\": 61")), 28,
                       "goal.par_time: must not exceed goal.time_limit"));
 }
 
 TEST(SceneJsonLevelErrors, OrderMustBeAPositiveInteger) {
   for (const char* bad : {"0", "1.5", "-3", "10001"}) {
-    EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2", std::string("\"order\": ") + bad)), 31,
-                        "level.order: must be an integer from 1 to 10000"))
+    EXPECT_TRUE(
+        failsAt(parseSampleScene(goalWith("\"order\": 2", std::string("\"order\": ") + bad)), 31,
+                "level.order: must be an integer from 1 to 10000"))
         << bad;
   }
 }
 
 TEST(SceneJsonLevelErrors, TitleMustBeShortPrintableText) {
-  EXPECT_TRUE(
-      failsAt(parse(goalWith("\"Reverse bay\"", "\"\"")), 31, "level.title: must be 1 to 64"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"Reverse bay\"", "\"" + std::string(65, 'x') + "\"")), 31,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"Reverse bay\"", "\"\"")), 31,
                       "level.title: must be 1 to 64"));
   EXPECT_TRUE(
-      failsAt(parse(goalWith("\"Reverse bay\"", "\"a\\tb\"")), 31, "level.title: must be 1 to 64"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"order\": 2, ", "")), 31, "level: missing \"order\""));
+      failsAt(parseSampleScene(goalWith("\"Reverse bay\"", "\"" + std::string(65, 'x') + "\"")), 31,
+              "level.title: must be 1 to 64"));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"Reverse bay\"", "\"a\\tb\"")), 31,
+                      "level.title: must be 1 to 64"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(goalWith("\"order\": 2, ", "")), 31, "level: missing \"order\""));
 }
 
 TEST(SceneJsonMarkingErrors, UnknownTypeMissingPointAndDegenerate) {
-  EXPECT_TRUE(failsAt(parse(goalWith("\"arrow\"", "\"zebra\"")), 34,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"arrow\"", "\"zebra\"")), 34,
                       "markings[1].type: expected \"line\" or \"arrow\", found \"zebra\""));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"to\": [0, 3]", "\"to\": [0, 0]")), 34,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"to\": [0, 3]", "\"to\": [0, 0]")), 34,
                       "markings[1]: from and to must differ"));
-  EXPECT_TRUE(failsAt(parse(goalWith(", \"to\": [0, 3]", "")), 34, "markings[1]: missing \"to\""));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"width\": 11")), 33,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith(", \"to\": [0, 3]", "")), 34,
+                      "markings[1]: missing \"to\""));
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"width\": 0.12", "\"width\": 11")), 33,
                       "markings[0].width: must be finite, > 0 and at most 10 m"));
-  EXPECT_TRUE(failsAt(parse(goalWith("\"width\": 0.12", "\"paint\": 1")), 33,
+  EXPECT_TRUE(failsAt(parseSampleScene(goalWith("\"width\": 0.12", "\"paint\": 1")), 33,
                       "unknown key \"paint\" in markings[0]"));
 }
 

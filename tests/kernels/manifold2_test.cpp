@@ -7,6 +7,7 @@
 #include "../geometry/random_cases2.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "manifold_margin.hpp"
 
 namespace cardemo {
 namespace {
@@ -114,14 +115,11 @@ TEST(Manifold2, FarFromOrigin) {
   }
 }
 
-double margin(const ManifoldSettings& s, double separation) {
-  return (1.0 - s.relative_tolerance) * std::abs(separation) + s.absolute_tolerance;
-}
-
 // How much worse than the SAT separation S a kept face may be: either the previous face within
 // margin(S), or A's face F that B failed to beat by margin(F), i.e. F >= (S - abs) / rel.
 double worstKept(const ManifoldSettings& s, double sat) {
-  return std::max(margin(s, sat), sat - (sat - s.absolute_tolerance) / s.relative_tolerance);
+  return std::max(testing::manifoldMargin(s, sat),
+                  sat - (sat - s.absolute_tolerance) / s.relative_tolerance);
 }
 
 TEST(Manifold2Random, PointsAgreeWithExactSat) {

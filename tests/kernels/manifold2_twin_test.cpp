@@ -11,6 +11,7 @@
 
 #include "../geometry/random_cases2.hpp"
 #include "kernels/manifold2.hpp"
+#include "manifold_margin.hpp"
 
 namespace cardemo {
 namespace {
@@ -60,12 +61,6 @@ struct Candidate {
   double separation = 0.0;
 };
 
-double margin(const ManifoldSettings& s, double separation) {
-  // For penetration (< 0) this is Box2D 2.1's k_relativeTol * sepA + k_absoluteTol rearranged;
-  // written with |separation| so that it also asks for a positive margin when apart.
-  return (1.0 - s.relative_tolerance) * std::abs(separation) + s.absolute_tolerance;
-}
-
 Candidate chooseReference(const std::array<double, 8>& seps, const ManifoldSettings& settings,
                           int previous) {
   Candidate best_a{0, seps[0]}, best_b{4, seps[4]};
@@ -79,10 +74,12 @@ Candidate chooseReference(const std::array<double, 8>& seps, const ManifoldSetti
   const Candidate& best = best_b.separation > best_a.separation ? best_b : best_a;
   if (previous >= 0 && previous < 8) {
     const double s = seps[static_cast<std::size_t>(previous)];
-    if (s >= best.separation - margin(settings, best.separation)) return {previous, s};
+    if (s >= best.separation - testing::manifoldMargin(settings, best.separation))
+      return {previous, s};
   }
   // A's face is the default; B's must win clearly, so that nearly equal faces do not flip-flop.
-  if (best_b.separation > best_a.separation + margin(settings, best_a.separation)) return best_b;
+  if (best_b.separation > best_a.separation + testing::manifoldMargin(settings, best_a.separation))
+    return best_b;
   return best_a;
 }
 

@@ -23,9 +23,7 @@ namespace {
 
 using testing::Random;
 
-bool sameBits(double x, double y) {
-  return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
-}
+using testing::sameBits;
 
 // Dyadic value on a 2^-10 grid: sums of such values are exact, so touching is exact.
 double dyadic(Random& rng, double lo, double hi) {

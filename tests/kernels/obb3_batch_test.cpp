@@ -27,9 +27,7 @@ constexpr double kSepTolerance = 2e-6;  // CONTRACT: sep within 2e-6 m
 // offsets up to 1e7 m while still catching any wrong axis or sign.
 constexpr double kScalarTolerance = 1e-9;
 
-bool sameBits(double x, double y) {
-  return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
-}
+using testing::sameBits;
 
 // The generated B, plus copies moved to other gaps along candidate axes of the pair, so that a
 // whole batch shares the pair's rotation relation (near-parallel, exactly parallel, ...).

@@ -9,18 +9,12 @@
 #include <optional>
 #include <string>
 
+#include "../support/temp_dir.hpp"
+
 namespace cardemo {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path tempDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("cardemo_best_test_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // Sets an environment variable for one test and restores it after.
 class EnvGuard {
@@ -89,7 +83,7 @@ TEST(BestScores, OfferKeepsOnlyBetterScores) {
 }
 
 TEST(BestScores, SaveCreatesTheFolderAndLoadReadsItBack) {
-  const fs::path dir = tempDir("roundtrip");
+  const fs::path dir = testing::freshTempDir("best_test_roundtrip");
   const EnvGuard xdg("XDG_DATA_HOME", dir.string());
   const std::string path = bestScoresPath();
   EXPECT_FALSE(fs::exists(fs::path(path).parent_path()));
@@ -118,7 +112,7 @@ TEST(BestScores, SaveCreatesTheFolderAndLoadReadsItBack) {
 }
 
 TEST(BestScores, MissingFileIsEmptyWithoutWarning) {
-  const fs::path dir = tempDir("missing");
+  const fs::path dir = testing::freshTempDir("best_test_missing");
   std::string warning = "stale";
   const BestScores b = loadBestScores((dir / "none.json").string(), warning);
   EXPECT_TRUE(b.by_scene.empty());
@@ -127,7 +121,7 @@ TEST(BestScores, MissingFileIsEmptyWithoutWarning) {
 }
 
 TEST(BestScores, CorruptFilesAreIgnoredWithOneLineWarning) {
-  const fs::path dir = tempDir("corrupt");
+  const fs::path dir = testing::freshTempDir("best_test_corrupt");
   const fs::path path = dir / "best-scores.json";
   const std::string good_entry = R"({"frames": 10, "seconds": 1, "damage": 0, "stars": 3})";
   for (const std::string& text : {
@@ -162,7 +156,7 @@ TEST(BestScores, CorruptFilesAreIgnoredWithOneLineWarning) {
 }
 
 TEST(BestScores, AFolderInPlaceOfTheFileIsUnreadable) {
-  const fs::path dir = tempDir("folder");
+  const fs::path dir = testing::freshTempDir("best_test_folder");
   const fs::path path = dir / "best-scores.json";
   fs::create_directories(path);
   std::string warning;

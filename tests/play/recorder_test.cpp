@@ -15,19 +15,13 @@
 #include <iterator>
 #include <vector>
 
+#include "../support/temp_dir.hpp"
 #include "io/replay_text.hpp"
 
 namespace cardemo {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path tempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("cardemo_recorder_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 std::string slurp(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
@@ -39,7 +33,7 @@ const InputFrame kUpLeft{true, false, true, false};
 const InputFrame kNone{};
 
 TEST(Recorder, MergesRunsAndPublishesOnFinish) {
-  const fs::path dir = tempDir("merge");
+  const fs::path dir = testing::freshTempDir("recorder_test_merge");
   const fs::path out = dir / "drive.replay";
   {
     Recorder rec(out.string(), (dir / "lot.json").string(), 120, 1000);
@@ -61,7 +55,7 @@ TEST(Recorder, MergesRunsAndPublishesOnFinish) {
 }
 
 TEST(Recorder, FlushesPeriodicallyAsAValidPrefix) {
-  const fs::path dir = tempDir("flush");
+  const fs::path dir = testing::freshTempDir("recorder_test_flush");
   const fs::path out = dir / "r.replay";
   const fs::path part = dir / "r.replay.part";
   Recorder rec(out.string(), (dir / "lot.json").string(), 60, 10);
@@ -80,7 +74,7 @@ TEST(Recorder, FlushesPeriodicallyAsAValidPrefix) {
 }
 
 TEST(Recorder, RoundTripsRandomInputs) {
-  const fs::path dir = tempDir("roundtrip");
+  const fs::path dir = testing::freshTempDir("recorder_test_roundtrip");
   const fs::path out = dir / "sub" / "r.replay";
   fs::create_directories(out.parent_path());
   std::vector<InputFrame> inputs;
@@ -108,7 +102,7 @@ TEST(Recorder, RoundTripsRandomInputs) {
 }
 
 TEST(Recorder, NamesAFarSceneByItsAbsolutePath) {
-  const fs::path dir = tempDir("absolute");
+  const fs::path dir = testing::freshTempDir("recorder_test_absolute");
   const fs::path out = dir / "r.replay";
   {
     Recorder rec(out.string(), "/usr/share/cardemo/lot.json", 120, 120);
@@ -127,7 +121,7 @@ TEST(Recorder, ReportsAnUnwritableFolder) {
 }
 
 TEST(Recorder, KeepsAndNamesALeftoverPart) {
-  const fs::path dir = tempDir("leftover");
+  const fs::path dir = testing::freshTempDir("recorder_test_leftover");
   const fs::path out = dir / "r.replay";
   const std::string leftover = "cardemo-replay 1\nhz 120\n120 U\n";
   std::ofstream(dir / "r.replay.part") << leftover;
@@ -146,7 +140,7 @@ TEST(Recorder, KeepsAndNamesALeftoverPart) {
 }
 
 TEST(Recorder, NamesAPartBeingRecordedByAnotherGame) {
-  const fs::path dir = tempDir("busy");
+  const fs::path dir = testing::freshTempDir("recorder_test_busy");
   const fs::path out = dir / "r.replay";
   Recorder first(out.string(), "", 120, 120);
   ASSERT_EQ(first.error(), "");
@@ -200,7 +194,7 @@ std::vector<InputFrame> randomInputs(int n, std::uint32_t seed) {
 }
 
 TEST(Recorder, AFailedWriteKeepsAValidPrefixAndSaysSo) {
-  const fs::path dir = tempDir("full");
+  const fs::path dir = testing::freshTempDir("recorder_test_full");
   const fs::path out = dir / "r.replay";
   const std::vector<InputFrame> inputs = randomInputs(1000, 99);
   recordUnderSizeLimit(out, dir / "report.txt", 2000, inputs);
@@ -226,7 +220,7 @@ TEST(Recorder, AFailedWriteKeepsAValidPrefixAndSaysSo) {
 }
 
 TEST(Recorder, NoRoomForTheHeaderLeavesNoFile) {
-  const fs::path dir = tempDir("noroom");
+  const fs::path dir = testing::freshTempDir("recorder_test_noroom");
   const fs::path out = dir / "r.replay";
   recordUnderSizeLimit(out, dir / "report.txt", 8, randomInputs(50, 7));
   const std::string report = slurp(dir / "report.txt");
@@ -238,7 +232,7 @@ TEST(Recorder, NoRoomForTheHeaderLeavesNoFile) {
 // Every write stays inside one 4 KiB page, so a kill between pages cannot cut a line: the file is
 // a valid replay at every page boundary, and pads with comment lines where a line would straddle.
 TEST(Recorder, NoLineStraddlesAPage) {
-  const fs::path dir = tempDir("pages");
+  const fs::path dir = testing::freshTempDir("recorder_test_pages");
   const fs::path out = dir / "r.replay";
   {
     Recorder rec(out.string(), "", 120, 37);

@@ -12,10 +12,10 @@
 namespace cardemo {
 namespace {
 
-const std::string kLot = std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/parking-lot.json";
+const std::string kLotScene = std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/parking-lot.json";
 
 World lot(int health = 100) {
-  Parsed<Scene> scene = loadScene(kLot);
+  Parsed<Scene> scene = loadScene(kLotScene);
   EXPECT_TRUE(scene.ok());
   Scene s = std::move(scene).value();
   s.player.health = health;

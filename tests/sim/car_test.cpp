@@ -8,17 +8,19 @@
 #include <string>
 
 #include "geometry/angle.hpp"
+#include "key_frames.hpp"
 
 namespace cardemo {
 namespace {
 
+using testing::kDown;
+using testing::kHandbrake;
+using testing::kLeft;
+using testing::kNone;
+using testing::kRight;
+using testing::kUp;
+
 constexpr double kDt = 1.0 / 120.0;
-constexpr InputFrame kNone{};
-constexpr InputFrame kUp{true, false, false, false};
-constexpr InputFrame kDown{false, true, false, false};
-constexpr InputFrame kLeft{false, false, true, false};
-constexpr InputFrame kRight{false, false, false, true};
-constexpr InputFrame kHandbrake{false, false, false, false, true};
 
 CarParams frictionless(CarIntegrator integrator = CarIntegrator::kSemiImplicitEuler) {
   CarParams p;

@@ -8,13 +8,15 @@
 
 #include "collision/narrow_phase.hpp"
 #include "geometry/angle.hpp"
+#include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
 namespace {
 
-constexpr InputFrame kNone{};
+using testing::kNone;
+
 constexpr double kResting = 1e-4;  // restingPenetration near the origin
 
 // A wall-like obstacle centred `distance` ahead of the player along `heading_deg`, its face turned

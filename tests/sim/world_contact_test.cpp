@@ -5,17 +5,18 @@
 #include <cmath>
 #include <numbers>
 
+#include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
 namespace {
 
+using testing::kNone;
+using testing::kUp;
+
 using test::parkedCar;
 using test::sceneWith;
-
-constexpr InputFrame kNone{};
-constexpr InputFrame kUp{true, false, false, false};
 
 double degrees(double d) {
   return d * std::numbers::pi / 180.0;

@@ -3,18 +3,20 @@
 
 #include <cmath>
 
+#include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
 namespace {
 
+using testing::kDown;
+using testing::kNone;
+using testing::kUp;
+
 using test::parkedCar;
 using test::sceneWith;
 
-constexpr InputFrame kNone{};
-constexpr InputFrame kUp{true, false, false, false};
-constexpr InputFrame kDown{false, true, false, false};
 constexpr double kLean = 2.0 * 3.14159265358979323846 / 180.0;  // 2 degrees
 
 TEST(WorldDamage, TouchesBelowTheThresholdCostNothing) {

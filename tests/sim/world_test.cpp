@@ -7,16 +7,17 @@
 #include <sstream>
 
 #include "geometry/sat_obb2.hpp"
+#include "key_frames.hpp"
 #include "scene_builders.hpp"
 
 namespace cardemo {
 namespace {
 
+using testing::kNone;
+using testing::kUp;
+
 using test::parkedCar;
 using test::sceneWith;
-
-constexpr InputFrame kNone{};
-constexpr InputFrame kUp{true, false, false, false};
 
 int expectedDamage(const WorldSettings& s, double speed) {
   if (speed < s.damage_threshold) return 0;

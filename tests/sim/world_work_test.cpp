@@ -3,17 +3,19 @@
 // stationary car costing nothing after frame 0.
 #include <gtest/gtest.h>
 
+#include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
 namespace {
 
+using testing::kNone;
+using testing::kUp;
+
 using test::parkedCar;
 using test::sceneWith;
 
-constexpr InputFrame kNone{};
-constexpr InputFrame kUp{true, false, false, false};
 constexpr InputFrame kBrake{false, true, false, false};
 
 TEST(WorldWork, StationaryCarCostsNothingAfterFrameZero) {
