@@ -12,8 +12,10 @@ cost is the process's CPU time (user + system, from wait4: the machine is shared
 less disturbed by other processes than wall time), the minimum of the runs. The load (process
 start, reading and parsing the scene, building the world) is the minimum over RUNS runs of a
 1-frame replay of the same scene, and is subtracted. Then the step benchmark of the same lot size
-(`step/lot/N/cardemo` in cardemo_bench: World::step alone on a scripted drive, CPU time) runs with
-RUNS repetitions, minimum taken, and the ratio end-to-end / step is printed.
+runs with RUNS repetitions, minimum CPU time taken: `step/circling/N/cardemo` in cardemo_bench is
+World::step alone on this very scene and circling input (bench/suite/circle_drive.cpp builds them
+with this script's arithmetic), and the ratio end-to-end / step is printed against it. The
+lot-drive row `step/lot/N/cardemo` (a different, cheaper drive) is printed beside it for reference.
 
     scripts/replay_speed.py --cardemo build/cardemo --bench build/bench/cardemo_bench
     scripts/replay_speed.py --frames 200000 --runs 3 --cars 1000        # quicker
@@ -117,18 +119,22 @@ def min_cpu(cmd, runs):
 
 
 def step_ns(bench, cars, runs):
+    """Least CPU time per step (ns) of the circling and lot-drive step rows for `cars` cars."""
     label = f"{cars // 1000}k" if cars % 1000 == 0 and cars < 1000000 else str(cars)
     if cars % 1000000 == 0:
         label = f"{cars // 1000000}M"
-    name = f"step/lot/{label}/cardemo"
-    cmd = [bench, f"--benchmark_filter=^{name}/", f"--benchmark_repetitions={runs}",
-           "--benchmark_format=json"]
+    names = {group: f"step/{group}/{label}/cardemo" for group in ("circling", "lot")}
+    cmd = [bench, f"--benchmark_filter=^step/(circling|lot)/{label}/cardemo/",
+           f"--benchmark_repetitions={runs}", "--benchmark_format=json"]
     result = subprocess.run(cmd, check=True, capture_output=True, text=True)
-    times = [b["cpu_time"] for b in json.loads(result.stdout)["benchmarks"]
-             if b.get("run_type") == "iteration" and b["name"].startswith(name)]
-    if not times:
-        sys.exit(f"{' '.join(cmd)}: no {name} rows")
-    return min(times), name
+    rows = [b for b in json.loads(result.stdout)["benchmarks"] if b.get("run_type") == "iteration"]
+    out = {}
+    for group, name in names.items():
+        times = [b["cpu_time"] for b in rows if b["name"].startswith(name + "/")]
+        if not times:
+            sys.exit(f"{' '.join(cmd)}: no {name} rows")
+        out[group] = min(times)
+    return out, names
 
 
 def main():
@@ -162,20 +168,24 @@ def main():
         row = {"cars": cars, "frames": args.frames, "load_s": load, "total_s": total,
                "replay_ns": ns, "hits": hits}
         if args.bench:
-            row["step_ns"], row["bench_row"] = step_ns(args.bench, cars, args.runs)
+            steps, names = step_ns(args.bench, cars, args.runs)
+            row["step_ns"], row["lot_ns"] = steps["circling"], steps["lot"]
+            row["bench_row"], row["lot_row"] = names["circling"], names["lot"]
         rows.append(row)
         print(f"{cars} cars: load {load:.3f} s, {args.frames} frames {total:.3f} s, "
               f"{ns:.1f} ns/frame ({1e9 / ns:,.0f} frames/s), hits {hits}"
               + (f"; {row['bench_row']} {row['step_ns']:.1f} ns/step, ratio {ns / row['step_ns']:.2f}x"
+                 f"; for reference {row['lot_row']} {row['lot_ns']:.1f} ns/step"
                  if args.bench else ""), flush=True)
 
     if args.markdown:
-        print("\n| parked cars | `cardemo replay`, end to end | frames/s | `World::step` (step bench) "
-              "| steps/s | ratio |")
-        print("| ---: | ---: | ---: | ---: | ---: | ---: |")
+        print("\n| parked cars | `cardemo replay`, end to end | frames/s | `World::step` on the same "
+              "circle (`step/circling`) | steps/s | ratio | lot drive (`step/lot`), for reference |")
+        print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
         for r in rows:
             step = (f"{r['step_ns']:.0f} ns | {1e9 / r['step_ns'] / 1e6:.1f} M | "
-                    f"{r['replay_ns'] / r['step_ns']:.2f}x" if "step_ns" in r else " | | ")
+                    f"{r['replay_ns'] / r['step_ns']:.2f}x | {r['lot_ns']:.0f} ns"
+                    if "step_ns" in r else " | | | ")
             print(f"| {r['cars']:,} | {r['replay_ns']:.0f} ns | {1e9 / r['replay_ns'] / 1e6:.1f} M | "
                   f"{step} |")
     return 0
