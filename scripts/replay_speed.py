@@ -11,10 +11,11 @@ Each replay runs as a user runs it, the whole process (`cardemo replay FILE`), R
 cost is the process's CPU time (user + system, from wait4: the machine is shared, and CPU time is
 less disturbed by other processes than wall time), the minimum of the runs. The load (process
 start, reading and parsing the scene, building the world) is the minimum over RUNS runs of a
-1-frame replay of the same scene, and is subtracted. Then the step benchmark of the same lot size
-runs with RUNS repetitions, minimum CPU time taken: `step/circling/N/cardemo` in cardemo_bench is
-World::step alone on this very scene and circling input (bench/suite/circle_drive.cpp builds them
-with this script's arithmetic), and the ratio end-to-end / step is printed against it. The
+1-frame replay of the same scene, and is subtracted. The step benchmark of the same lot size runs
+once in each of the RUNS rounds too (1-frame replay, full replay, benchmark, interleaved so that
+all three see the same load), minimum CPU time taken: `step/circling/N/cardemo` in cardemo_bench
+is World::step alone on this very scene and circling input (bench/suite/circle_drive.cpp builds
+them with this script's arithmetic), and the ratio end-to-end / step is printed against it. The
 lot-drive row `step/lot/N/cardemo` (a different, cheaper drive) is printed beside it for reference.
 
     scripts/replay_speed.py --cardemo build/cardemo --bench build/bench/cardemo_bench
@@ -102,30 +103,25 @@ def circling_replay(scene_path, frames):
     return "\n".join(lines) + "\n"
 
 
-def min_cpu(cmd, runs):
-    """Least CPU time (user + system, seconds) of `runs` runs of `cmd`, and its stdout."""
-    best = math.inf
-    out = ""
-    for _ in range(runs):
-        # The child is reaped inside run(), so its usage is the increase of RUSAGE_CHILDREN.
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        proc = subprocess.run(cmd, capture_output=True, text=True)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        if proc.returncode != 0:
-            sys.exit(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stderr}")
-        out = proc.stdout
-        best = min(best, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
-    return best, out
+def cpu(cmd):
+    """CPU time (user + system, seconds) of one run of `cmd`, and its stdout."""
+    # The child is reaped inside run(), so its usage is the increase of RUSAGE_CHILDREN.
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if proc.returncode != 0:
+        sys.exit(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stderr}")
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), proc.stdout
 
 
-def step_ns(bench, cars, runs):
-    """Least CPU time per step (ns) of the circling and lot-drive step rows for `cars` cars."""
+def step_ns(bench, cars):
+    """CPU time per step (ns) of one run of the circling and lot-drive step rows for `cars` cars."""
     label = f"{cars // 1000}k" if cars % 1000 == 0 and cars < 1000000 else str(cars)
     if cars % 1000000 == 0:
         label = f"{cars // 1000000}M"
     names = {group: f"step/{group}/{label}/cardemo" for group in ("circling", "lot")}
     cmd = [bench, f"--benchmark_filter=^step/(circling|lot)/{label}/cardemo/",
-           f"--benchmark_repetitions={runs}", "--benchmark_format=json"]
+           "--benchmark_format=json"]
     result = subprocess.run(cmd, check=True, capture_output=True, text=True)
     rows = [b for b in json.loads(result.stdout)["benchmarks"] if b.get("run_type") == "iteration"]
     out = {}
@@ -161,14 +157,22 @@ def main():
         full.write_text(circling_replay(scene, args.frames))
         one = work / f"circle-{cars}-1.replay"
         one.write_text(circling_replay(scene, 1))
-        load, _ = min_cpu([args.cardemo, "replay", str(one)], args.runs)
-        total, summary = min_cpu([args.cardemo, "replay", str(full)], args.runs)
+        load = total = math.inf
+        summary = ""
+        steps = {"circling": math.inf, "lot": math.inf}
+        names = {}
+        for _ in range(args.runs):
+            load = min(load, cpu([args.cardemo, "replay", str(one)])[0])
+            t, summary = cpu([args.cardemo, "replay", str(full)])
+            total = min(total, t)
+            if args.bench:
+                run, names = step_ns(args.bench, cars)
+                steps = {g: min(steps[g], run[g]) for g in steps}
         hits = next((line.split()[1] for line in summary.splitlines() if line.startswith("hits")), "?")
         ns = (total - load) / args.frames * 1e9
         row = {"cars": cars, "frames": args.frames, "load_s": load, "total_s": total,
                "replay_ns": ns, "hits": hits}
         if args.bench:
-            steps, names = step_ns(args.bench, cars, args.runs)
             row["step_ns"], row["lot_ns"] = steps["circling"], steps["lot"]
             row["bench_row"], row["lot_row"] = names["circling"], names["lot"]
         rows.append(row)
