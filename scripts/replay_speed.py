@@ -11,9 +11,12 @@ Each replay runs as a user runs it, the whole process (`cardemo replay FILE`), R
 cost is the process's CPU time (user + system, from wait4: the machine is shared, and CPU time is
 less disturbed by other processes than wall time), the minimum of the runs. The load (process
 start, reading and parsing the scene, building the world) is the minimum over RUNS runs of a
-1-frame replay of the same scene, and is subtracted. Then the step benchmark of the same lot size
-(`step/lot/N/cardemo` in cardemo_bench: World::step alone on a scripted drive, CPU time) runs with
-RUNS repetitions, minimum taken, and the ratio end-to-end / step is printed.
+1-frame replay of the same scene, and is subtracted. The step benchmark of the same lot size runs
+once in each of the RUNS rounds too (1-frame replay, full replay, benchmark, interleaved so that
+all three see the same load), minimum CPU time taken: `step/circling/N/cardemo` in cardemo_bench
+is World::step alone on this very scene and circling input (bench/suite/circle_drive.cpp builds
+them with this script's arithmetic), and the ratio end-to-end / step is printed against it. The
+lot-drive row `step/lot/N/cardemo` (a different, cheaper drive) is printed beside it for reference.
 
     scripts/replay_speed.py --cardemo build/cardemo --bench build/bench/cardemo_bench
     scripts/replay_speed.py --frames 200000 --runs 3 --cars 1000        # quicker
@@ -100,35 +103,34 @@ def circling_replay(scene_path, frames):
     return "\n".join(lines) + "\n"
 
 
-def min_cpu(cmd, runs):
-    """Least CPU time (user + system, seconds) of `runs` runs of `cmd`, and its stdout."""
-    best = math.inf
-    out = ""
-    for _ in range(runs):
-        # The child is reaped inside run(), so its usage is the increase of RUSAGE_CHILDREN.
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        proc = subprocess.run(cmd, capture_output=True, text=True)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        if proc.returncode != 0:
-            sys.exit(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stderr}")
-        out = proc.stdout
-        best = min(best, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
-    return best, out
+def cpu(cmd):
+    """CPU time (user + system, seconds) of one run of `cmd`, and its stdout."""
+    # The child is reaped inside run(), so its usage is the increase of RUSAGE_CHILDREN.
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if proc.returncode != 0:
+        sys.exit(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stderr}")
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), proc.stdout
 
 
-def step_ns(bench, cars, runs):
+def step_ns(bench, cars):
+    """CPU time per step (ns) of one run of the circling and lot-drive step rows for `cars` cars."""
     label = f"{cars // 1000}k" if cars % 1000 == 0 and cars < 1000000 else str(cars)
     if cars % 1000000 == 0:
         label = f"{cars // 1000000}M"
-    name = f"step/lot/{label}/cardemo"
-    cmd = [bench, f"--benchmark_filter=^{name}/", f"--benchmark_repetitions={runs}",
+    names = {group: f"step/{group}/{label}/cardemo" for group in ("circling", "lot")}
+    cmd = [bench, f"--benchmark_filter=^step/(circling|lot)/{label}/cardemo/",
            "--benchmark_format=json"]
     result = subprocess.run(cmd, check=True, capture_output=True, text=True)
-    times = [b["cpu_time"] for b in json.loads(result.stdout)["benchmarks"]
-             if b.get("run_type") == "iteration" and b["name"].startswith(name)]
-    if not times:
-        sys.exit(f"{' '.join(cmd)}: no {name} rows")
-    return min(times), name
+    rows = [b for b in json.loads(result.stdout)["benchmarks"] if b.get("run_type") == "iteration"]
+    out = {}
+    for group, name in names.items():
+        times = [b["cpu_time"] for b in rows if b["name"].startswith(name + "/")]
+        if not times:
+            sys.exit(f"{' '.join(cmd)}: no {name} rows")
+        out[group] = min(times)
+    return out, names
 
 
 def main():
@@ -155,27 +157,39 @@ def main():
         full.write_text(circling_replay(scene, args.frames))
         one = work / f"circle-{cars}-1.replay"
         one.write_text(circling_replay(scene, 1))
-        load, _ = min_cpu([args.cardemo, "replay", str(one)], args.runs)
-        total, summary = min_cpu([args.cardemo, "replay", str(full)], args.runs)
+        load = total = math.inf
+        summary = ""
+        steps = {"circling": math.inf, "lot": math.inf}
+        names = {}
+        for _ in range(args.runs):
+            load = min(load, cpu([args.cardemo, "replay", str(one)])[0])
+            t, summary = cpu([args.cardemo, "replay", str(full)])
+            total = min(total, t)
+            if args.bench:
+                run, names = step_ns(args.bench, cars)
+                steps = {g: min(steps[g], run[g]) for g in steps}
         hits = next((line.split()[1] for line in summary.splitlines() if line.startswith("hits")), "?")
         ns = (total - load) / args.frames * 1e9
         row = {"cars": cars, "frames": args.frames, "load_s": load, "total_s": total,
                "replay_ns": ns, "hits": hits}
         if args.bench:
-            row["step_ns"], row["bench_row"] = step_ns(args.bench, cars, args.runs)
+            row["step_ns"], row["lot_ns"] = steps["circling"], steps["lot"]
+            row["bench_row"], row["lot_row"] = names["circling"], names["lot"]
         rows.append(row)
         print(f"{cars} cars: load {load:.3f} s, {args.frames} frames {total:.3f} s, "
               f"{ns:.1f} ns/frame ({1e9 / ns:,.0f} frames/s), hits {hits}"
               + (f"; {row['bench_row']} {row['step_ns']:.1f} ns/step, ratio {ns / row['step_ns']:.2f}x"
+                 f"; for reference {row['lot_row']} {row['lot_ns']:.1f} ns/step"
                  if args.bench else ""), flush=True)
 
     if args.markdown:
-        print("\n| parked cars | `cardemo replay`, end to end | frames/s | `World::step` (step bench) "
-              "| steps/s | ratio |")
-        print("| ---: | ---: | ---: | ---: | ---: | ---: |")
+        print("\n| parked cars | `cardemo replay`, end to end | frames/s | `World::step` on the same "
+              "circle (`step/circling`) | steps/s | ratio | lot drive (`step/lot`), for reference |")
+        print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
         for r in rows:
             step = (f"{r['step_ns']:.0f} ns | {1e9 / r['step_ns'] / 1e6:.1f} M | "
-                    f"{r['replay_ns'] / r['step_ns']:.2f}x" if "step_ns" in r else " | | ")
+                    f"{r['replay_ns'] / r['step_ns']:.2f}x | {r['lot_ns']:.0f} ns"
+                    if "step_ns" in r else " | | | ")
             print(f"| {r['cars']:,} | {r['replay_ns']:.0f} ns | {1e9 / r['replay_ns'] / 1e6:.1f} M | "
                   f"{step} |")
     return 0

@@ -17,7 +17,8 @@ void registerNarrow(const BenchConfig& config);
 void registerBatch(const BenchConfig& config);
 /// Broad phase: UniformGrid and b2DynamicTree, build and query over parked cars.
 void registerBroad(const BenchConfig& config);
-/// Whole step: World::step and b2World::Step with one car among N parked cars.
+/// Whole step: World::step and b2World::Step with one car among N parked cars; World::step on
+/// the circling replay of scripts/replay_speed.py.
 void registerStep(const BenchConfig& config);
 /// Cost per pair at 0, 1e3, 1e5 and 1e7 m from the origin, cardemo and Box2D.
 void registerOffset(const BenchConfig& config);

@@ -5,7 +5,8 @@
 // (SetTransform) and given our car's velocity over that step, so it meets the same parked cars
 // even after Box2D's solver has pushed it elsewhere. Every row times the whole drive except its
 // first step (Box2D creates its contacts there), which is reported apart as the counter
-// `first_step_us`.
+// `first_step_us`. `step/circling/N/cardemo` is World::step alone on the circling replay of
+// scripts/replay_speed.py (same scene, same keys), the like-for-like figure for `cardemo replay`.
 
 #include <benchmark/benchmark.h>
 #include <time.h>
@@ -15,6 +16,7 @@
 #include <numbers>
 
 #include "bench_registry.hpp"
+#include "circle_drive.hpp"
 #include "lot_drive.hpp"
 #include "sim/world.hpp"
 
@@ -126,6 +128,41 @@ void runCardemo(benchmark::State& s, std::size_t n, std::size_t frames) {
   reportDrive(s, c);
 }
 
+// The circling replay of scripts/replay_speed.py (circle_drive.hpp) on its scene, one size at a
+// time: World::step on exactly the input `cardemo replay` runs there, for a like-for-like ratio.
+const Scene& circleCase(std::size_t n) {
+  static std::unique_ptr<std::pair<std::size_t, Scene>> last;
+  if (!last || last->first != n) {
+    last.reset();
+    last = std::make_unique<std::pair<std::size_t, Scene>>(n, circleScene(n));
+  }
+  return last->second;
+}
+
+// Steps before the timed ones (5 min of game time): throttle a third of the time brings the car
+// to its circling speed (10.64 m/s) in about 30,000 steps, and the 2M-frame replay is almost all
+// circling at that speed.
+constexpr std::size_t kCircleWarmup = 36000;
+
+void runCircling(benchmark::State& s, std::size_t n) {
+  WorldSettings settings;
+  settings.hz = kHz;
+  World world(circleCase(n), settings);
+  std::size_t k = 0;
+  while (k < kCircleWarmup) world.step(circleInput(k++));
+  const WorldStats before = world.stats();
+  const double speed = world.car().speed;
+  for (auto _ : s) world.step(circleInput(k++));
+  const double steps = static_cast<double>(s.iterations());
+  s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()));
+  s.counters["speed_mps"] = speed;
+  s.counters["hits"] = static_cast<double>(world.hits().size());
+  s.counters["narrow_per_step"] =
+      static_cast<double>(world.stats().narrowphase_tests - before.narrowphase_tests) / steps;
+  s.counters["contacts_per_step"] =
+      static_cast<double>(world.stats().contacts - before.contacts) / steps;
+}
+
 #if defined(CARDEMO_HAVE_COMPARE)
 float angleOf(const Obb2& box) {
   return static_cast<float>(std::atan2(box.axis.y(), box.axis.x()));
@@ -233,6 +270,14 @@ void registerStep(const BenchConfig& config) {
       config.smoke ? std::vector<std::size_t>{100, 1000}
                    : std::vector<std::size_t>{100, 1000, 10000, 100000, 1000000};
   for (const std::size_t n : sizes) registerSize(n, config);
+  const std::vector<std::size_t> circling =
+      config.smoke ? std::vector<std::size_t>{1000} : std::vector<std::size_t>{1000, 100000};
+  for (const std::size_t n : circling) {
+    benchmark::RegisterBenchmark(("step/circling/" + sizeLabel(n) + "/cardemo").c_str(),
+                                 [n](benchmark::State& s) { runCircling(s, n); })
+        ->Iterations(static_cast<benchmark::IterationCount>(driveFrames(config)))
+        ->Unit(benchmark::kNanosecond);
+  }
 }
 
 }  // namespace cardemo::bench
