@@ -220,17 +220,19 @@ TEST(ReplayTextErrors, NulByteInALine) {
 
 TEST(ReplayTextErrors, LineBreaksControlsAndCommentsInOnePass) {
   // One '\r' before the line break is part of the break; any other, even in a comment, is not.
-  EXPECT_TRUE(parse("cardemo-replay 1\r\n10 U\r\n5 .\r").ok());
-  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\n10 U\r\r\n"), 2, "control character \"\\x0d\""));
-  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\n10 U # a\rb\n"), 2, "control character"));
+  EXPECT_TRUE(parseSampleReplay("cardemo-replay 1\r\n10 U\r\n5 .\r").ok());
+  EXPECT_TRUE(
+      failsAt(parseSampleReplay("cardemo-replay 1\n10 U\r\r\n"), 2, "control character \"\\x0d\""));
+  EXPECT_TRUE(
+      failsAt(parseSampleReplay("cardemo-replay 1\n10 U # a\rb\n"), 2, "control character"));
   // The first control byte is the one named; a tab is not one.
-  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\n10\tU\x01\x02\n"), 2, "\"\\x01\""));
+  EXPECT_TRUE(failsAt(parseSampleReplay("cardemo-replay 1\n10\tU\x01\x02\n"), 2, "\"\\x01\""));
   // `#` starts a comment only at the start or after a blank; the first such one counts.
-  const Parsed<Replay> p = parse("cardemo-replay 1\n\t10 U\t# x # y\n# 5 D\n");
+  const Parsed<Replay> p = parseSampleReplay("cardemo-replay 1\n\t10 U\t# x # y\n# 5 D\n");
   ASSERT_TRUE(p.ok());
   ASSERT_EQ(p.value().runs.size(), 1u);
   EXPECT_EQ(p.value().runs[0].count, 10);
-  EXPECT_TRUE(failsAt(parse("cardemo-replay 1\n10 U#x\n"), 2, "unknown key \"#\""));
+  EXPECT_TRUE(failsAt(parseSampleReplay("cardemo-replay 1\n10 U#x\n"), 2, "unknown key \"#\""));
 }
 
 TEST(ReplayTextErrors, CountOverflow) {

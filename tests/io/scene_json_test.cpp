@@ -613,7 +613,7 @@ std::string goalWithHold(std::string_view hold) {
 TEST(SceneJsonGoal, HoldTimeIsReadAndZeroIsAllowed) {
   for (const auto& [text, value] :
        {std::pair{"1.25", 1.25}, std::pair{"0", 0.0}, std::pair{"59.5", 59.5}}) {
-    const Parsed<Scene> p = parse(goalWithHold(text));
+    const Parsed<Scene> p = parseSampleScene(goalWithHold(text));
     ASSERT_TRUE(p.ok()) << text << ": " << p.error().toString();
     EXPECT_EQ(p.value().goal->hold_time, value) << text;
   }
@@ -621,23 +621,26 @@ TEST(SceneJsonGoal, HoldTimeIsReadAndZeroIsAllowed) {
 
 TEST(SceneJsonGoalErrors, HoldTimeIsValidated) {
   for (const char* bad : {"-0.1", "60.5", "1e300"}) {
-    EXPECT_TRUE(failsAt(parse(goalWithHold(bad)), 27,
+    EXPECT_TRUE(failsAt(parseSampleScene(goalWithHold(bad)), 27,
                         "goal.hold_time: must be finite, >= 0 and at most 60 s"))
         << bad;
   }
-  EXPECT_TRUE(failsAt(parse(goalWithHold("\"long\"")), 27, "goal.hold_time: expected a number"));
-  EXPECT_TRUE(failsAt(parse(goalWithHold("true")), 27, "goal.hold_time: expected a number"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(goalWithHold("\"long\"")), 27, "goal.hold_time: expected a number"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(goalWithHold("true")), 27, "goal.hold_time: expected a number"));
 }
 
 TEST(SceneJsonGoalErrors, HoldTimeMustBeShorterThanTheTimeLimit) {
   const std::string text =
       replaced(replaced(goalWithHold("10"), "\"time_limit\": 60", "\"time_limit\": 10"),
                "\"par_time\": 15", "\"par_time\": 5");
-  EXPECT_TRUE(failsAt(parse(text), 27, "goal.hold_time: must be less than goal.time_limit"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(text), 27, "goal.hold_time: must be less than goal.time_limit"));
   const std::string par_ok =
       replaced(replaced(goalWithHold("9.5"), "\"time_limit\": 60", "\"time_limit\": 10"),
                "\"par_time\": 15", "\"par_time\": 5");
-  EXPECT_TRUE(parse(par_ok).ok()) << parse(par_ok).error().toString();
+  EXPECT_TRUE(parseSampleScene(par_ok).ok()) << parseSampleScene(par_ok).error().toString();
 }
 
 TEST(SceneJsonGoalErrors, ParTimeAboveTimeLimit) {
