@@ -16,32 +16,35 @@ namespace {
 
 constexpr double kMaxValue = 1e9;
 
-enum class Kind { kCoordinate, kSize, kQuaternion };
+enum class ColumnKind { kCoordinate, kSize, kQuaternion };
 
 struct Column {
   std::string_view name;
-  Kind kind;
+  ColumnKind kind;
 };
 
-constexpr std::array<Column, 10> kColumns2{{{"ax", Kind::kCoordinate},
-                                            {"ay", Kind::kCoordinate},
-                                            {"a_heading_deg", Kind::kCoordinate},
-                                            {"a_length", Kind::kSize},
-                                            {"a_width", Kind::kSize},
-                                            {"bx", Kind::kCoordinate},
-                                            {"by", Kind::kCoordinate},
-                                            {"b_heading_deg", Kind::kCoordinate},
-                                            {"b_length", Kind::kSize},
-                                            {"b_width", Kind::kSize}}};
+constexpr std::array<Column, 10> kColumns2{{{"ax", ColumnKind::kCoordinate},
+                                            {"ay", ColumnKind::kCoordinate},
+                                            {"a_heading_deg", ColumnKind::kCoordinate},
+                                            {"a_length", ColumnKind::kSize},
+                                            {"a_width", ColumnKind::kSize},
+                                            {"bx", ColumnKind::kCoordinate},
+                                            {"by", ColumnKind::kCoordinate},
+                                            {"b_heading_deg", ColumnKind::kCoordinate},
+                                            {"b_length", ColumnKind::kSize},
+                                            {"b_width", ColumnKind::kSize}}};
 
 constexpr std::array<Column, 20> kColumns3{
-    {{"ax", Kind::kCoordinate},  {"ay", Kind::kCoordinate},  {"az", Kind::kCoordinate},
-     {"aqw", Kind::kQuaternion}, {"aqx", Kind::kQuaternion}, {"aqy", Kind::kQuaternion},
-     {"aqz", Kind::kQuaternion}, {"a_sx", Kind::kSize},      {"a_sy", Kind::kSize},
-     {"a_sz", Kind::kSize},      {"bx", Kind::kCoordinate},  {"by", Kind::kCoordinate},
-     {"bz", Kind::kCoordinate},  {"bqw", Kind::kQuaternion}, {"bqx", Kind::kQuaternion},
-     {"bqy", Kind::kQuaternion}, {"bqz", Kind::kQuaternion}, {"b_sx", Kind::kSize},
-     {"b_sy", Kind::kSize},      {"b_sz", Kind::kSize}}};
+    {{"ax", ColumnKind::kCoordinate},  {"ay", ColumnKind::kCoordinate},
+     {"az", ColumnKind::kCoordinate},  {"aqw", ColumnKind::kQuaternion},
+     {"aqx", ColumnKind::kQuaternion}, {"aqy", ColumnKind::kQuaternion},
+     {"aqz", ColumnKind::kQuaternion}, {"a_sx", ColumnKind::kSize},
+     {"a_sy", ColumnKind::kSize},      {"a_sz", ColumnKind::kSize},
+     {"bx", ColumnKind::kCoordinate},  {"by", ColumnKind::kCoordinate},
+     {"bz", ColumnKind::kCoordinate},  {"bqw", ColumnKind::kQuaternion},
+     {"bqx", ColumnKind::kQuaternion}, {"bqy", ColumnKind::kQuaternion},
+     {"bqz", ColumnKind::kQuaternion}, {"b_sx", ColumnKind::kSize},
+     {"b_sy", ColumnKind::kSize},      {"b_sz", ColumnKind::kSize}}};
 
 // Parses one field strictly (whole field, finite, within the column's range); `why` on failure.
 bool parseField(std::string_view field, const Column& column, double& out, std::string& why) {
@@ -64,14 +67,14 @@ bool parseField(std::string_view field, const Column& column, double& out, std::
     return false;
   }
   switch (column.kind) {
-    case Kind::kCoordinate:
-    case Kind::kQuaternion:
+    case ColumnKind::kCoordinate:
+    case ColumnKind::kQuaternion:
       if (!std::isfinite(v) || std::abs(v) > kMaxValue) {
         why = "must be finite with |value| <= 1e9";
         return false;
       }
       break;
-    case Kind::kSize:
+    case ColumnKind::kSize:
       if (!std::isfinite(v) || !(v > 0.0)) {
         why = "must be finite and > 0";
         return false;

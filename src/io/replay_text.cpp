@@ -22,7 +22,7 @@ using text::trim;
 /// Replay files larger than this are refused (about 8 million key changes).
 constexpr std::size_t kMaxReplayBytes = 64u << 20;
 constexpr std::string_view kHeader = "cardemo-replay 1";
-constexpr std::int64_t kMaxHealth = 1'000'000;
+constexpr std::int64_t kMaxExpectedHealth = 1'000'000;
 
 // Strict non-negative decimal: digits only, no sign, no spaces; false when empty, malformed or
 // above `max`.
@@ -281,7 +281,8 @@ class ReplayParser {
     if (what == "health") {
       if (health_line_ != 0) return duplicate("expect health", health_line_);
       std::int64_t v = 0;
-      if (!whole(rest, kMaxHealth, v)) return badNumber("expect health", rest, kMaxHealth);
+      if (!whole(rest, kMaxExpectedHealth, v))
+        return badNumber("expect health", rest, kMaxExpectedHealth);
       health_line_ = line_;
       e.health = static_cast<int>(v);
     } else if (what == "hits") {

@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "render/hud.hpp"
+#include "render/hud_colors.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
 namespace {
 
-constexpr Rgba kText{235, 238, 242};
-constexpr Rgba kDim{160, 168, 178};
+using hud_colors::kDim;
+using hud_colors::kText;
 
 struct Metrics {
   float scale, pad;

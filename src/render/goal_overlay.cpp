@@ -6,6 +6,7 @@
 
 #include "render/end_panel.hpp"
 #include "render/hud.hpp"
+#include "render/hud_colors.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
@@ -13,9 +14,9 @@ namespace {
 
 constexpr Rgba kTarget{255, 214, 70, 255};
 constexpr Rgba kTargetReady{90, 230, 120, 255};
-constexpr Rgba kPanel{12, 14, 18, 190};
-constexpr Rgba kText{235, 238, 242};
-constexpr Rgba kDim{160, 168, 178};
+using hud_colors::kDim;
+using hud_colors::kPanel;
+using hud_colors::kText;
 
 Obb2 bayBox(const Goal& goal) {
   return Obb2::fromDegrees(goal.bay.center, goal.bay.heading_deg, goal.bay.length, goal.bay.width);

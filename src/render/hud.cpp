@@ -5,14 +5,15 @@
 #include <cstdio>
 
 #include "render/end_panel.hpp"
+#include "render/hud_colors.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
 namespace {
 
-constexpr Rgba kPanel{12, 14, 18, 190};
-constexpr Rgba kText{235, 238, 242};
-constexpr Rgba kDim{160, 168, 178};
+using hud_colors::kDim;
+using hud_colors::kPanel;
+using hud_colors::kText;
 constexpr Rgba kTrough{55, 58, 64};
 
 std::string format(const char* fmt, double v) {

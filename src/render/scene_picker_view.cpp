@@ -4,14 +4,15 @@
 #include <cmath>
 
 #include "render/hud.hpp"
+#include "render/hud_colors.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
 namespace {
 
 constexpr Rgba kBackground{24, 26, 30};
-constexpr Rgba kText{235, 238, 242};
-constexpr Rgba kDim{160, 168, 178};
+using hud_colors::kDim;
+using hud_colors::kText;
 constexpr Rgba kSelected{70, 110, 170, 255};
 constexpr Rgba kTitle{255, 214, 70, 255};
 

@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "geometry/angle.hpp"
 #include "sim/car_schemes.hpp"
 
 namespace cardemo {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Moves `value` toward `target` by at most `max_delta`, landing exactly on the target.
 double approach(double value, double target, double max_delta) {
@@ -30,7 +29,7 @@ double gripLock(const CarParams& params, double speed) {
   // Steady turning on the bicycle model: lateral acceleration v^2 tan(delta) / L (Rajamani,
   // "Vehicle Dynamics and Control", 2nd ed., sec. 2.2); capping it at the grip gives the lock.
   const double v2 = speed * speed;
-  if (!(v2 > 0.0)) return 0.5 * kPi;
+  if (!(v2 > 0.0)) return 0.5 * std::numbers::pi;
   return std::atan(params.grip * params.wheelbase / v2);
 }
 

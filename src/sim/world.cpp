@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <utility>
 
 #include "geometry/angle.hpp"
@@ -12,7 +13,6 @@
 namespace cardemo {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
 constexpr double kNoContact = 2.0;
 // Damage points (speed x damage_per_mps) this close above an integer still round down to it.
@@ -82,7 +82,7 @@ World::World(Scene scene, const WorldSettings& settings)
       crash_of_(colliders_.size(), 0) {
   crash_window_frames_ = std::llround(settings_.crash_window * settings_.hz);
   car_.position = scene_.player.position;
-  car_.heading = wrapRadians(scene_.player.heading_deg * (kPi / 180.0));
+  car_.heading = wrapRadians(scene_.player.heading_deg * (std::numbers::pi / 180.0));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
   car_.speed = scene_.player.speed;
   ++stats_.broadphase_builds;
@@ -277,7 +277,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
   const double travel = std::sqrt(next.speed * next.speed + next.slip * next.slip) / settings_.hz;
   // The turn within the step (both headings are wrapped, so the raw difference is within 2 pi).
   double turn = std::abs(next.heading - start.heading);
-  if (turn > kPi) turn = 2.0 * kPi - turn;
+  if (turn > std::numbers::pi) turn = 2.0 * std::numbers::pi - turn;
   // The far corners sweep an arc of the half-diagonal times the turn.
   const double arc = turn * half_diagonal_;
   if (travel <= limit && arc <= limit) {

@@ -8,6 +8,9 @@
 
 namespace cardemo::exact {
 
+/// Precision (bits) of the GMP floats that normalise exact gaps: far beyond a double's 53.
+inline constexpr mp_bitcnt_t kFloatBits = 256;
+
 /// The integer X with x = X 2^e exactly; `e` must be at most the exponent of x's lowest set bit.
 inline mpz_class scaledInteger(double x, long e) {
   if (x == 0.0) return 0;

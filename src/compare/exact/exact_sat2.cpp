@@ -12,8 +12,6 @@ namespace cardemo::exact {
 namespace {
 
 // 256 bits leave the rounded-to-double separation far below a nanometre of error.
-constexpr mp_bitcnt_t kFloatBits = 256;
-
 struct Point {
   mpq_class x, y;
 };

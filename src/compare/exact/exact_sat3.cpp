@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "compare/exact/exact_numbers.hpp"
 #include "compare/exact/exact_sat.hpp"
 
 namespace cardemo::exact {
@@ -12,8 +13,6 @@ namespace {
 using QVec = std::array<mpq_class, 3>;
 
 // 256 bits: the only inexact steps are the square root and division by the axis length.
-constexpr mp_bitcnt_t kFloatBits = 256;
-
 QVec toQ(const Eigen::Vector3d& v) {
   return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())};
 }

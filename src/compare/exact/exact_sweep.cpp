@@ -12,15 +12,13 @@
 namespace cardemo::exact {
 namespace {
 
-constexpr mp_bitcnt_t kFloatBits = 256;
-
 // Every input is a double, so every input is an integer times 2^e for the smallest exponent e
 // among them (e <= 0 here). Working in those integers (mpz) is exact and far cheaper than mpq,
 // which reduces a fraction at every step (the same idea as collidePolygons in exact_sat2.cpp).
 // Quantities then carry a "degree": a coordinate is degree 1 (real = X 2^e), a projection on an
 // edge-normal axis degree 2, a box radius h |u . n| degree 3; all interval ends are lifted to
 // degree 3, and a time p / v (degree 3 over degree 2) is T 2^e.
-long lowestBitExponent(double x) {
+long commonExponent(double x) {
   if (x == 0.0) return 0;
   int e = 0;
   std::frexp(x, &e);
@@ -167,7 +165,7 @@ void projectBox(const IntBox& b, const IntVec& n, long e, mpz_class& lo, mpz_cla
 }
 
 long exponentOf(std::initializer_list<double> values, long e) {
-  for (const double v : values) e = std::min(e, lowestBitExponent(v));
+  for (const double v : values) e = std::min(e, commonExponent(v));
   return e;
 }
 
