@@ -54,7 +54,6 @@ class Recorder {
   InputFrame run_keys_;
   std::int64_t run_length_ = 0;
   std::int64_t frames_ = 0;
-  std::int64_t pending_frames_ = 0;  // frames in pending_ and the open run
   std::int64_t durable_frames_ = 0;
   std::int64_t written_bytes_ = 0;  // bytes written to the file
   std::int64_t durable_bytes_ = 0;  // bytes written and fsynced
