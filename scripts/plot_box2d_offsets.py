@@ -16,6 +16,8 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from pyplot_loader import import_pyplot  # noqa: E402
 ROOT = os.path.dirname(HERE)
 LINES = [
     ("ours", "cardemo", "o-"),
@@ -43,16 +45,7 @@ def main(argv):
             out = args.pop(0)
         else:
             binary = a
-    subprocess.run([os.path.join(HERE, "ensure-packages.sh"), "python3-matplotlib"], check=True)
-    try:
-        import matplotlib
-    except ImportError:
-        # python3-matplotlib is Debian's: another python3 first on PATH (pyenv) cannot see it.
-        if sys.executable != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + argv)
-        raise
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = import_pyplot(__file__, argv)
 
     with tempfile.TemporaryDirectory() as tmp:
         csv_path = given_csv or os.path.join(tmp, "sweep.csv")

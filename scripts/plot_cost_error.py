@@ -21,6 +21,8 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from pyplot_loader import import_pyplot  # noqa: E402
 ROOT = os.path.dirname(HERE)
 ENGINES = [  # bench engine, compare-sweep verdict, label, style
     ("cardemo", "ours", "cardemo collideObb2 (double)", "o-"),
@@ -50,15 +52,7 @@ def main(argv):
             out = args.pop(0)
         else:
             build = a
-    subprocess.run([os.path.join(HERE, "ensure-packages.sh"), "python3-matplotlib"], check=True)
-    try:
-        import matplotlib
-    except ImportError:
-        if sys.executable != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + argv)
-        raise
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = import_pyplot(__file__, argv)
 
     with tempfile.TemporaryDirectory() as tmp:
         bench_json = os.path.join(tmp, "offset.json")

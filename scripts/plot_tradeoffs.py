@@ -24,6 +24,8 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from pyplot_loader import import_pyplot  # noqa: E402
 ROOT = os.path.dirname(HERE)
 
 # Column schemas: name -> type (str, int, float). Every column must be present, in this order.
@@ -399,20 +401,6 @@ def plot_ccd(plt, rows, out, default):
     return summary
 
 
-def import_pyplot(argv):
-    subprocess.run([os.path.join(HERE, "ensure-packages.sh"), "python3-matplotlib"], check=True)
-    try:
-        import matplotlib
-    except ImportError:
-        # python3-matplotlib is Debian's: another python3 first on PATH (pyenv) cannot see it.
-        if sys.executable != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + argv)
-        raise
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
-
-
 def run_study(executable, csv_path, quick):
     cmd = [executable, "--csv", csv_path] + (["--quick"] if quick else [])
     print("running", " ".join(cmd), flush=True)
@@ -478,7 +466,7 @@ def main(argv):
     os.makedirs(csv_dir, exist_ok=True)
     os.makedirs(img_dir, exist_ok=True)
     # Before any run: this may restart the script under Debian's python3.
-    plt = import_pyplot(argv)
+    plt = import_pyplot(__file__, argv)
 
     if run:
         for study in STUDIES:

@@ -30,6 +30,9 @@ import resource
 import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_large_lot import Lcg  # noqa: E402  (the same generator as the bundled large lot)
 from pathlib import Path
 
 PITCH = 2.6  # metres between bay centres (scripts/make_large_lot.py)
@@ -38,17 +41,6 @@ AISLE = 7.0
 BLOCK_HEIGHT = 2 * (CAR_LENGTH + 0.1) + AISLE
 CLEARING = 20.0  # radius of the empty circle in the middle of the lot, metres
 CIRCLE = ("4 UL", "8 L")  # throttle a third of the time, steering left throughout
-
-
-class Lcg:
-    """Numerical Recipes' 32-bit LCG, as in scripts/make_large_lot.py."""
-
-    def __init__(self, seed):
-        self.state = seed & 0xFFFFFFFF
-
-    def uniform(self):
-        self.state = (1664525 * self.state + 1013904223) & 0xFFFFFFFF
-        return self.state / 2**32
 
 
 def lot_scene(cars):

@@ -116,19 +116,6 @@ const T& cached(std::map<std::size_t, std::unique_ptr<T>>& cache, std::size_t n,
   return *slot;
 }
 
-// Numerical Recipes' 32-bit LCG, as scripts/make_large_lot.py uses.
-class Lcg {
- public:
-  explicit Lcg(std::uint32_t seed) : state_(seed) {}
-  double uniform() {
-    state_ = 1664525u * state_ + 1013904223u;
-    return static_cast<double>(state_) / 4294967296.0;
-  }
-
- private:
-  std::uint32_t state_;
-};
-
 constexpr double kPitch = 2.6;
 constexpr double kAisle = 7.0;
 constexpr double kBlockHeight = 2 * (4.5 + 0.1) + kAisle;

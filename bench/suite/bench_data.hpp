@@ -13,6 +13,22 @@
 
 namespace cardemo::bench {
 
+/// Numerical Recipes' 32-bit LCG, the generator of scripts/make_large_lot.py and
+/// scripts/replay_speed.py, so C++ and Python build the same scenes.
+class Lcg {
+ public:
+  /// Starts from `seed`.
+  explicit Lcg(std::uint32_t seed) : state_(seed) {}
+  /// Next value in [0, 1).
+  double uniform() {
+    state_ = 1664525u * state_ + 1013904223u;
+    return static_cast<double>(state_) / 4294967296.0;
+  }
+
+ private:
+  std::uint32_t state_;
+};
+
 /// Suite-wide settings: the smoke run (CTest) uses small sizes and no timing claims.
 struct BenchConfig {
   bool smoke = false;  ///< Small N everywhere; only checks that every benchmark runs.

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "bench_data.hpp"
 #include "io/scene_json.hpp"
 
 namespace cardemo::bench {
@@ -22,19 +23,6 @@ constexpr double kCarLength = 4.5;
 constexpr double kAisle = 7.0;
 constexpr double kBlockHeight = 2 * (kCarLength + 0.1) + kAisle;
 constexpr double kClearing = 20.0;
-
-// Numerical Recipes' 32-bit LCG, as in the script.
-class Lcg {
- public:
-  explicit Lcg(std::uint32_t seed) : state_(seed) {}
-  double uniform() {
-    state_ = 1664525u * state_ + 1013904223u;
-    return static_cast<double>(state_) / 4294967296.0;
-  }
-
- private:
-  std::uint32_t state_;
-};
 
 // What `"%.3f"` writes, read back: the double the scene file holds.
 double rounded3(double v) {
