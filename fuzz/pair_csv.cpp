@@ -27,9 +27,9 @@ bool goodBox(const Obb2& b) {
 }
 
 bool goodBox(const Obb3& b) {
-  const Eigen::Matrix3d gram = b.rotation.transpose() * b.rotation;
+  const Eigen::Matrix3d gram = b.rotation().transpose() * b.rotation();
   return b.center.allFinite() && b.half.allFinite() && (b.half.array() >= 0.0).all() &&
-         b.rotation.allFinite() &&
+         b.rotation().allFinite() &&
          (gram - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= 1e-12;
 }
 

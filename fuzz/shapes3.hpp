@@ -19,7 +19,7 @@ namespace cardemo::fuzz {
 
 /// Half-width of `box` along unit direction n.
 inline double supportRadius(const Obb3& box, const Eigen::Vector3d& n) {
-  return (box.rotation.transpose() * n).cwiseAbs().dot(box.half);
+  return (box.rotation().transpose() * n).cwiseAbs().dot(box.half);
 }
 
 /// u x v with every component accurate even for nearly parallel u, v (fma, Kahan's algorithm),
@@ -39,7 +39,7 @@ inline std::string describe(const Obb3& b) {
   std::ostringstream out;
   out.precision(17);
   out << "center (" << b.center.transpose() << ") half (" << b.half.transpose() << ") rotation ["
-      << b.rotation.row(0) << "; " << b.rotation.row(1) << "; " << b.rotation.row(2) << "]";
+      << b.rotation().row(0) << "; " << b.rotation().row(1) << "; " << b.rotation().row(2) << "]";
   return out.str();
 }
 
@@ -154,9 +154,9 @@ class BoxDecoder3 {
     if (mode == 1) {
       const int k = in_.pick(15);
       const Eigen::Vector3d axis =
-          k < 3   ? Eigen::Vector3d(a.rotation.col(k))
-          : k < 6 ? Eigen::Vector3d(b.rotation.col(k - 3))
-                  : accurateCross(a.rotation.col((k - 6) / 3), b.rotation.col((k - 6) % 3));
+          k < 3   ? Eigen::Vector3d(a.rotation().col(k))
+          : k < 6 ? Eigen::Vector3d(b.rotation().col(k - 3))
+                  : accurateCross(a.rotation().col((k - 6) / 3), b.rotation().col((k - 6) % 3));
       const double scale = axis.cwiseAbs().maxCoeff();
       if (scale > 0.0) n = (axis / scale).normalized() * in_.sign();
     }

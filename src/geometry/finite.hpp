@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
@@ -35,9 +36,10 @@ inline constexpr double kMaxCoordinate = 1e300;
 }
 
 /// True when the box is finite and within kMaxCoordinate (its rotation comes from fromQuaternion).
+/// The rotation is finite iff its frame defect, which the box stores, is.
 [[nodiscard]] inline bool inDomain(const Obb3& b) {
   return b.center.cwiseAbs().maxCoeff() + b.half.sum() <= kMaxCoordinate &&
-         b.half.minCoeff() >= 0.0 && b.rotation.allFinite();
+         b.half.minCoeff() >= 0.0 && b.frameDefect() < std::numeric_limits<double>::infinity();
 }
 
 /// True when the verdict carries finite numbers only.

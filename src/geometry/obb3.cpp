@@ -7,6 +7,10 @@
 #include <type_traits>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "geometry/finite.hpp"
 
 namespace cardemo {
@@ -22,17 +26,24 @@ Obb3 Obb3::fromQuaternion(const Eigen::Vector3d& center, const Eigen::Quaternion
   const Eigen::Vector4d s = raw / scale;
   const Eigen::Vector4d u = s / s.norm();
   const double x = u[0], y = u[1], z = u[2], w = u[3];
-  Obb3 box;
-  box.center = center;
-  box.rotation << 1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y),
+  Eigen::Matrix3d m;
+  m << 1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y),
       2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x),
       2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y);
+  Obb3 box;
+  box.center = center;
+  box.setRotation(m);
   box.half = 0.5 * size;
   return box;
 }
 
+void Obb3::setRotation(const Eigen::Matrix3d& m) {
+  rotation_ = m;
+  frame_defect_ = cardemo::frameDefect(m);
+}
+
 Aabb3 Obb3::aabb() const {
-  const Eigen::Vector3d r = rotation.cwiseAbs() * half;
+  const Eigen::Vector3d r = rotation_.cwiseAbs() * half;
   Aabb3 box{center - r, center + r};
   // One ulp outwards so that rounding can never cut off a corner of the box.
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -95,8 +106,8 @@ template <int N, class F>
 [[gnu::always_inline]] inline Pose3 relativePose(const Obb3& a, const Obb3& b) {
   Pose3 p;
   p.d = b.center - a.center;
-  const double* ra = a.rotation.data();  // column-major: column k at 3k
-  const double* rb = b.rotation.data();
+  const double* ra = a.rotation().data();  // column-major: column k at 3k
+  const double* rb = b.rotation().data();
   const double* ha = a.half.data();
   const double* hb = b.half.data();
   staticFor<3>([&](auto kc) {
@@ -132,10 +143,10 @@ struct EdgeFilter {
   double min_length2;  // floor on the squared axis length for a normalised fast gap
 };
 
-EdgeFilter edgeFilter(const Obb3& a, const Obb3& b, const Pose3& p) {
+[[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b, const Pose3& p) {
   constexpr double kU = 0x1p-53;
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  const double phi = std::max(frameDefect(a.rotation), frameDefect(b.rotation));
+  const double phi = std::max(a.frameDefect(), b.frameDefect());
   if (!(phi <= 0x1p-30)) return {kInf, kInf};
   // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
   const double scale =
@@ -174,7 +185,7 @@ template <int I, int J>
 // The world-frame unit axis of fastEdge (i, j), pointing from A towards B.
 Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose3& p, int i, int j) {
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-  const Eigen::Vector3d n = a.rotation.col(i2) * p.r[i1][j] - a.rotation.col(i1) * p.r[i2][j];
+  const Eigen::Vector3d n = a.rotation().col(i2) * p.r[i1][j] - a.rotation().col(i1) * p.r[i2][j];
   const double along = p.t[i2] * p.r[i1][j] - p.t[i1] * p.r[i2][j];
   return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
 }
@@ -193,7 +204,7 @@ Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose3& p, int i, int j) {
 // Minkowski difference that the face axes do not already cover, so skipping is exact. No epsilon.
 bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int j, double& gap,
              Eigen::Vector3d& axis) {
-  const Eigen::Vector3d n = accurateCross(a.rotation.col(i), b.rotation.col(j));
+  const Eigen::Vector3d n = accurateCross(a.rotation().col(i), b.rotation().col(j));
   const double m = n.cwiseAbs().maxCoeff();
   if (m == 0.0) return false;
   // Rescale so the largest component is 1: no underflow in the norm even at tiny angles.
@@ -201,13 +212,34 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   const double len = axis.norm();
   // a_i . axis and b_j . axis are exactly zero for the exact cross product; dropping them is exact.
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-  const double ra = a.half[i1] * std::abs(axis.dot(a.rotation.col(i1))) +
-                    a.half[i2] * std::abs(axis.dot(a.rotation.col(i2)));
-  const double rb = b.half[j1] * std::abs(axis.dot(b.rotation.col(j1))) +
-                    b.half[j2] * std::abs(axis.dot(b.rotation.col(j2)));
+  const double ra = a.half[i1] * std::abs(axis.dot(a.rotation().col(i1))) +
+                    a.half[i2] * std::abs(axis.dot(a.rotation().col(i2)));
+  const double rb = b.half[j1] * std::abs(axis.dot(b.rotation().col(j1))) +
+                    b.half[j2] * std::abs(axis.dot(b.rotation().col(j2)));
   gap = (std::abs(axis.dot(d)) - ra - rb) / len;
   axis /= len;
   return true;
+}
+
+// g[e] = gap[e] / sqrt(length2[e]) for e = 0..9, two at a time on SSE2 (the x86-64 baseline): the
+// same correctly rounded operations as the scalar loop, so the same bits either way.
+[[gnu::always_inline]] inline void normalisedGaps(const double (&gap)[10],
+                                                  const double (&length2)[10], double (&g)[10]) {
+#if defined(__SSE2__)
+  for (int e = 0; e < 10; e += 2) {
+    _mm_storeu_pd(g + e, _mm_div_pd(_mm_loadu_pd(gap + e), _mm_sqrt_pd(_mm_loadu_pd(length2 + e))));
+  }
+#else
+  for (int e = 0; e < 10; ++e) g[e] = gap[e] / std::sqrt(length2[e]);
+#endif
+}
+
+// The first largest of the fifteen candidate gaps (faces, then edges 3i + j): `!(g > best)` keeps
+// the earlier axis on a tie, as the accurate loop does.
+[[gnu::always_inline]] inline void pickLargest(double g, int index, double& best, int& best_index) {
+  const bool larger = g > best;
+  best = larger ? g : best;
+  best_index = larger ? index : best_index;
 }
 
 }  // namespace
@@ -216,43 +248,83 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
-  r.separation = p.face[0];
-  for (int k = 1; k < 6; ++k) {
-    if (p.face[k] > r.separation) {
-      r.separation = p.face[k];
-      r.axis_index = k;
-    }
-  }
-  if (r.axis_index < 3) {
-    r.normal = a.rotation.col(r.axis_index);
-    if (p.t[r.axis_index] < 0.0) r.normal = -r.normal;
-  } else {
-    r.normal = b.rotation.col(r.axis_index - 3);
-    if (p.tb[r.axis_index - 3] < 0.0) r.normal = -r.normal;
-  }
+  double best = p.face[0];
+  int best_index = 0;
+  staticFor<5>([&](auto kc) {
+    constexpr int k = decltype(kc)::value + 1;
+    pickLargest(p.face[k], k, best, best_index);
+  });
   FastEdge fast[9];
   fastEdges(a, b, p, fast);
   const EdgeFilter filter = edgeFilter(a, b, p);
-  bool fast_winner = false;
-  for (int e = 0; e < 9; ++e) {
-    const FastEdge& f = fast[e];
-    if (std::abs(f.gap) > filter.bound && f.length2 > filter.min_length2) {
-      const double g = f.gap / std::sqrt(f.length2);
-      if (!(g > r.separation)) continue;
-      r.separation = g;
-      r.axis_index = 6 + e;
-      fast_winner = true;
-      continue;
+  // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
+  // candidates are the fast ones; they are normalised together and compared without branches.
+  bool sure = true;
+  double gap[10], length2[10], g[10];
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value;
+    sure &= (std::abs(fast[e].gap) > filter.bound) & (fast[e].length2 > filter.min_length2);
+    gap[e] = fast[e].gap;
+    length2[e] = fast[e].length2;
+  });
+  if (sure) {
+    gap[9] = 0.0;
+    length2[9] = 1.0;
+    normalisedGaps(gap, length2, g);
+    staticFor<9>([&](auto ec) {
+      constexpr int e = decltype(ec)::value;
+      pickLargest(g[e], 6 + e, best, best_index);
+    });
+    r.separation = best;
+    r.axis_index = best_index;
+    if (best_index >= 6) {
+      r.normal = fastEdgeNormal(a, p, (best_index - 6) / 3, (best_index - 6) % 3);
+      r.hit = best <= 0.0;
+      assert(isFinite(r));
+      return r;
     }
-    double g = 0.0;
-    Eigen::Vector3d axis;
-    if (!edgeGap(a, b, p.d, e / 3, e % 3, g, axis) || !(g > r.separation)) continue;
-    r.separation = g;
-    r.axis_index = 6 + e;
-    r.normal = axis.dot(p.d) < 0.0 ? Eigen::Vector3d(-axis) : axis;
-    fast_winner = false;
+  } else {
+    // Some edge gap lies within the bound: edge by edge, the accurate axis where it does.
+    r.separation = best;
+    r.axis_index = best_index;
+    bool fast_winner = false;
+    bool accurate_winner = false;
+    for (int e = 0; e < 9; ++e) {
+      const FastEdge& f = fast[e];
+      if (std::abs(f.gap) > filter.bound && f.length2 > filter.min_length2) {
+        const double ge = f.gap / std::sqrt(f.length2);
+        if (!(ge > r.separation)) continue;
+        r.separation = ge;
+        r.axis_index = 6 + e;
+        fast_winner = true;
+        accurate_winner = false;
+        continue;
+      }
+      double ge = 0.0;
+      Eigen::Vector3d axis;
+      if (!edgeGap(a, b, p.d, e / 3, e % 3, ge, axis) || !(ge > r.separation)) continue;
+      r.separation = ge;
+      r.axis_index = 6 + e;
+      r.normal = axis.dot(p.d) < 0.0 ? Eigen::Vector3d(-axis) : axis;
+      fast_winner = false;
+      accurate_winner = true;
+    }
+    if (fast_winner || accurate_winner) {
+      if (fast_winner)
+        r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+      r.hit = r.separation <= 0.0;
+      assert(isFinite(r));
+      return r;
+    }
   }
-  if (fast_winner) r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+  // A face axis wins: the stored column, pointing from A towards B.
+  if (r.axis_index < 3) {
+    r.normal = a.rotation().col(r.axis_index);
+    if (p.t[r.axis_index] < 0.0) r.normal = -r.normal;
+  } else {
+    r.normal = b.rotation().col(r.axis_index - 3);
+    if (p.tb[r.axis_index - 3] < 0.0) r.normal = -r.normal;
+  }
   r.hit = r.separation <= 0.0;
   assert(isFinite(r));
   return r;

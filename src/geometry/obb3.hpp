@@ -9,21 +9,33 @@
 
 namespace cardemo {
 
-/// Oriented box: { center + R * p : |p_i| <= half_i }. `rotation` is stored exactly as computed
-/// from the quaternion (see fromQuaternion); the exact oracle uses these same double entries.
-struct Obb3 {
+/// Oriented box: { center + R * p : |p_i| <= half_i }. The rotation R is stored exactly as computed
+/// from the quaternion (see fromQuaternion); the exact oracle uses these same double entries. R is
+/// private so that the box can carry frameDefect(R), computed once whenever R is set: the pair
+/// queries' error bound needs it on every call (docs/architecture.md, "The 3D filter").
+class Obb3 {
+ public:
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< Centre, metres.
-  Eigen::Matrix3d rotation =
-      Eigen::Matrix3d::Identity();                 ///< Columns are the box axes, world frame.
-  Eigen::Vector3d half = Eigen::Vector3d::Ones();  ///< Half extents along the box axes, metres.
+  Eigen::Vector3d half = Eigen::Vector3d::Ones();    ///< Half extents along the box axes, metres.
 
   /// Box from centre, quaternion (w, x, y, z; normalised here; must be non-zero and finite) and
   /// full sizes along the box's own x, y, z.
   [[nodiscard]] static Obb3 fromQuaternion(const Eigen::Vector3d& center,
                                            const Eigen::Quaterniond& q,
                                            const Eigen::Vector3d& size);
+  /// Columns are the box axes, world frame.
+  [[nodiscard]] const Eigen::Matrix3d& rotation() const { return rotation_; }
+  /// Stores `m` as the rotation as it is (any matrix; the queries stay exact for a stored matrix
+  /// off a rotation, only slower) and recomputes frameDefect().
+  void setRotation(const Eigen::Matrix3d& m);
+  /// cardemo::frameDefect(rotation()), kept up to date by every write of the rotation.
+  [[nodiscard]] double frameDefect() const { return frame_defect_; }
   /// Tight axis-aligned bounds.
   [[nodiscard]] Aabb3 aabb() const;
+
+ private:
+  Eigen::Matrix3d rotation_ = Eigen::Matrix3d::Identity();
+  double frame_defect_ = 0x1p-51;  // frameDefect of the identity: its 4-ulp rounding allowance
 };
 
 /// 15-axis SAT (3 faces of A, 3 of B, 9 edge-edge cross products). Face axes work in A's frame.
@@ -44,7 +56,7 @@ struct Obb3 {
 /// |m_k . m_l - delta_kl| and component of |(m_k1 x m_k2) - m_k| (k1, k2 the next indices
 /// cyclically), plus 4 ulps for the rounding of this very computation; infinite for NaN. About
 /// 2e-15 for rotations from fromQuaternion. It bounds the error of the A-frame edge gaps
-/// (docs/architecture.md, "Batch kernels").
+/// (docs/architecture.md, "The 3D filter"); Obb3 stores it for its own rotation.
 [[nodiscard]] double frameDefect(const Eigen::Matrix3d& m);
 
 }  // namespace cardemo

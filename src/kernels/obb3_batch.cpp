@@ -14,13 +14,13 @@ Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
   }
   for (std::vector<double>& v : rotation_) v.reserve(boxes.size());
   for (const Obb3& b : boxes) {
-    frame_defect_ = std::max(frame_defect_, cardemo::frameDefect(b.rotation));
+    frame_defect_ = std::max(frame_defect_, b.frameDefect());
     for (int k = 0; k < 3; ++k) {
       center_[static_cast<std::size_t>(k)].push_back(b.center[k]);
       half_[static_cast<std::size_t>(k)].push_back(b.half[k]);
       for (int j = 0; j < 3; ++j) {
         rotation_[3 * static_cast<std::size_t>(j) + static_cast<std::size_t>(k)].push_back(
-            b.rotation(k, j));
+            b.rotation()(k, j));
       }
     }
   }
@@ -29,13 +29,14 @@ Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
 Obb3 Obb3Batch::box(std::size_t i) const {
   assert(i < size());
   Obb3 b;
+  Eigen::Matrix3d rotation;
   for (int k = 0; k < 3; ++k) {
     b.center[k] = center_[static_cast<std::size_t>(k)][i];
     b.half[k] = half_[static_cast<std::size_t>(k)][i];
     for (int j = 0; j < 3; ++j)
-      b.rotation(k, j) =
-          rotation_[3 * static_cast<std::size_t>(j) + static_cast<std::size_t>(k)][i];
+      rotation(k, j) = rotation_[3 * static_cast<std::size_t>(j) + static_cast<std::size_t>(k)][i];
   }
+  b.setRotation(rotation);
   return b;
 }
 
@@ -69,7 +70,7 @@ namespace {
 // (64U + 8 phi) / |axis| <= 2^-40 sets the floor on the squared axis length.
 void setFilter(const Obb3& a, const Obb3Batch& many, batch_detail::Box3One& one) {
   constexpr double kU = 0x1p-53;
-  const double phi = std::max(frameDefect(a.rotation), many.frameDefect());
+  const double phi = std::max(a.frameDefect(), many.frameDefect());
   if (!(phi <= 0x1p-30)) {
     one.edge_gap_error = std::numeric_limits<double>::infinity();
     one.min_edge_length2 = std::numeric_limits<double>::infinity();
@@ -86,7 +87,7 @@ batch_detail::Box3One unpack(const Obb3& a) {
   one.cy = a.center.y();
   one.cz = a.center.z();
   for (int j = 0; j < 3; ++j) {
-    for (int k = 0; k < 3; ++k) one.r[3 * j + k] = a.rotation(k, j);
+    for (int k = 0; k < 3; ++k) one.r[3 * j + k] = a.rotation()(k, j);
   }
   one.hx = a.half.x();
   one.hy = a.half.y();

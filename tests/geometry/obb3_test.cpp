@@ -29,10 +29,10 @@ constexpr int kCasesPerClass = 100000;
 std::string describe(const Obb3& a, const Obb3& b) {
   std::ostringstream s;
   s.precision(17);
-  s << "A c=" << a.center.transpose() << " h=" << a.half.transpose() << " R=[" << a.rotation.row(0)
-    << "; " << a.rotation.row(1) << "; " << a.rotation.row(2) << "]\n"
-    << "B c=" << b.center.transpose() << " h=" << b.half.transpose() << " R=[" << b.rotation.row(0)
-    << "; " << b.rotation.row(1) << "; " << b.rotation.row(2) << "]";
+  s << "A c=" << a.center.transpose() << " h=" << a.half.transpose() << " R=["
+    << a.rotation().row(0) << "; " << a.rotation().row(1) << "; " << a.rotation().row(2) << "]\n"
+    << "B c=" << b.center.transpose() << " h=" << b.half.transpose() << " R=["
+    << b.rotation().row(0) << "; " << b.rotation().row(1) << "; " << b.rotation().row(2) << "]";
   return s.str();
 }
 
@@ -185,7 +185,7 @@ TEST(Obb3NearParallel, CrossedBeamsSeparatedByAnEdgeAxis) {
         Obb3::fromQuaternion({1e7, -3e6, 2e5}, Eigen::Quaterniond::Identity(), {100.0, 0.5, 0.5});
     Obb3 b = Obb3::fromQuaternion({0, 0, 0}, tilt, {100.0, 0.5, 0.5});
     // Diagonal offset in A's yz plane puts B beyond A's long edge, off every face normal.
-    const Eigen::Vector3d n = a.rotation.col(0).cross(b.rotation.col(0));
+    const Eigen::Vector3d n = a.rotation().col(0).cross(b.rotation().col(0));
     ASSERT_GT(n.norm(), 0.0);
     for (const double gap : {-1e-3, -1e-7, 1e-7, 1e-3}) {
       const Eigen::Vector3d u = n.normalized();
@@ -208,16 +208,17 @@ TEST(Obb3Quaternion, NormalisesAndIsOrthonormal) {
     const Obb3 one = Obb3::fromQuaternion(c, q, s);
     const Obb3 two = Obb3::fromQuaternion(c, Eigen::Quaterniond(2.0 * q.coeffs()), s);
     const Obb3 tiny = Obb3::fromQuaternion(c, Eigen::Quaterniond(1e-200 * q.coeffs()), s);
-    ASSERT_EQ(one.rotation, two.rotation);
-    ASSERT_TRUE(one.rotation.isApprox(tiny.rotation, 1e-15));
+    ASSERT_EQ(one.rotation(), two.rotation());
+    ASSERT_TRUE(one.rotation().isApprox(tiny.rotation(), 1e-15));
     ASSERT_EQ(one.half, 0.5 * s);
     ASSERT_EQ(one.center, c);
-    worst = std::max(worst, (one.rotation.transpose() * one.rotation - Eigen::Matrix3d::Identity())
-                                .cwiseAbs()
-                                .maxCoeff());
-    ASSERT_NEAR(one.rotation.determinant(), 1.0, 1e-14);
+    worst =
+        std::max(worst, (one.rotation().transpose() * one.rotation() - Eigen::Matrix3d::Identity())
+                            .cwiseAbs()
+                            .maxCoeff());
+    ASSERT_NEAR(one.rotation().determinant(), 1.0, 1e-14);
     // Same rotation as Eigen's, up to rounding.
-    ASSERT_TRUE(one.rotation.isApprox(q.normalized().toRotationMatrix(), 1e-14));
+    ASSERT_TRUE(one.rotation().isApprox(q.normalized().toRotationMatrix(), 1e-14));
   }
   EXPECT_LE(worst, 4e-15);  // a few ulps
 }
@@ -230,12 +231,12 @@ TEST(Obb3Aabb, ContainsEveryCorner) {
     const Aabb3 bounds = box.aabb();
     for (int c = 0; c < 8; ++c) {
       const Eigen::Vector3d p{(c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0};
-      const Eigen::Vector3d corner = box.center + box.rotation * p.cwiseProduct(box.half);
+      const Eigen::Vector3d corner = box.center + box.rotation() * p.cwiseProduct(box.half);
       // Loose: the corner itself is rounded; the bounds must be tight to a few ulps of 1e7.
       ASSERT_TRUE((bounds.min.array() <= corner.array() + 1e-8).all());
       ASSERT_TRUE((corner.array() <= bounds.max.array() + 1e-8).all());
     }
-    ASSERT_LE((bounds.max - bounds.min - 2.0 * box.rotation.cwiseAbs() * box.half).norm(), 1e-8);
+    ASSERT_LE((bounds.max - bounds.min - 2.0 * box.rotation().cwiseAbs() * box.half).norm(), 1e-8);
   }
 }
 
@@ -330,9 +331,11 @@ TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
     for (int k = 0; k < n; ++k) {
       Pair3 p = test3::gapPair(rng);
       for (Obb3* box : {&p.a, &p.b}) {
-        for (int e = 0; e < 9; ++e) box->rotation(e / 3, e % 3) += eps * test3::uniform(rng, -1, 1);
+        Eigen::Matrix3d m = box->rotation();
+        for (int e = 0; e < 9; ++e) m(e / 3, e % 3) += eps * test3::uniform(rng, -1, 1);
+        box->setRotation(m);
       }
-      const double phi = std::max(frameDefect(p.a.rotation), frameDefect(p.b.rotation));
+      const double phi = std::max(frameDefect(p.a.rotation()), frameDefect(p.b.rotation()));
       ASSERT_GT(phi, 0.1 * eps);
       ASSERT_LT(phi, 10.0 * eps);
       // checkPair but for the unit normal: a face normal is the stored column, 1e-9 off unit.
@@ -355,9 +358,10 @@ TEST(Obb3FastPath, FrameDefectOfRotationsAReflectionAndNaN) {
   std::mt19937_64 rng(0x0b3a0204);
   for (int k = 0; k < 1000; ++k) {
     const Obb3 box = Obb3::fromQuaternion({0, 0, 0}, test3::randomRotation(rng), {1, 1, 1});
-    const double phi = frameDefect(box.rotation);
+    const double phi = frameDefect(box.rotation());
     ASSERT_GT(phi, 0.0);  // never below the 4 ulps of its own rounding
     ASSERT_LT(phi, 1e-14);
+    ASSERT_EQ(box.frameDefect(), phi);  // the box's own copy, which the queries read
   }
   Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity();
   reflection(2, 2) = -1.0;  // orthonormal but left-handed
@@ -367,6 +371,24 @@ TEST(Obb3FastPath, FrameDefectOfRotationsAReflectionAndNaN) {
   EXPECT_EQ(frameDefect(nan), std::numeric_limits<double>::infinity());
   nan(1, 0) = std::numeric_limits<double>::infinity();
   EXPECT_EQ(frameDefect(nan), std::numeric_limits<double>::infinity());
+}
+
+// The queries read the defect the box stores, so every way of setting the rotation must keep it
+// equal to frameDefect(rotation()): the default identity, setRotation, and a copy.
+TEST(Obb3FastPath, BoxStoresTheDefectOfItsRotation) {
+  Obb3 box;
+  EXPECT_EQ(box.frameDefect(), frameDefect(box.rotation()));
+  Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
+  m(0, 1) = 1e-9;
+  box.setRotation(m);
+  EXPECT_EQ(box.rotation(), m);
+  EXPECT_EQ(box.frameDefect(), frameDefect(m));
+  EXPECT_GT(box.frameDefect(), 1e-10);
+  const Obb3 copy = box;
+  EXPECT_EQ(copy.frameDefect(), frameDefect(m));
+  m(1, 0) = std::nan("");
+  box.setRotation(m);
+  EXPECT_EQ(box.frameDefect(), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace

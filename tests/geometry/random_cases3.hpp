@@ -79,16 +79,16 @@ inline Eigen::Vector3d randomCenter(std::mt19937_64& rng) {
 
 /// Half-width of `box` along unit direction n (double; the oracle decides the truth).
 inline double supportRadius(const Obb3& box, const Eigen::Vector3d& n) {
-  return (box.rotation.transpose() * n).cwiseAbs().dot(box.half);
+  return (box.rotation().transpose() * n).cwiseAbs().dot(box.half);
 }
 
 /// Candidate axis k of the pair (0-2 A faces, 3-5 B faces, 6-14 a_i x b_j), unit; the zero
 /// vector when it vanishes.
 inline Eigen::Vector3d candidateAxis(const Obb3& a, const Obb3& b, int k) {
   Eigen::Vector3d n =
-      k < 3   ? Eigen::Vector3d(a.rotation.col(k))
-      : k < 6 ? Eigen::Vector3d(b.rotation.col(k - 3))
-              : Eigen::Vector3d(a.rotation.col((k - 6) / 3).cross(b.rotation.col((k - 6) % 3)));
+      k < 3   ? Eigen::Vector3d(a.rotation().col(k))
+      : k < 6 ? Eigen::Vector3d(b.rotation().col(k - 3))
+              : Eigen::Vector3d(a.rotation().col((k - 6) / 3).cross(b.rotation().col((k - 6) % 3)));
   const double len = n.norm();
   return len > 0.0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
 }
@@ -176,15 +176,16 @@ inline Pair3 nearParallelPair(std::mt19937_64& rng, double lo = 1e-15, double hi
     const int first = static_cast<int>(rng() % 9);
     for (int m = 0; m < 9; ++m) {
       const int k = 6 + (first + m) % 9;
-      const double len = p.a.rotation.col((k - 6) / 3).cross(p.b.rotation.col((k - 6) % 3)).norm();
+      const double len =
+          p.a.rotation().col((k - 6) / 3).cross(p.b.rotation().col((k - 6) % 3)).norm();
       if (len > 0.0 && len < bestLen && (pick < 3 || rng() % 3 == 0)) {
         best = k;
         bestLen = len;
       }
     }
     // Normalise an accurately formed cross product: the naive one is noise at 1e-15 rad.
-    const Eigen::Vector3d u = p.a.rotation.col((best - 6) / 3);
-    const Eigen::Vector3d v = p.b.rotation.col((best - 6) % 3);
+    const Eigen::Vector3d u = p.a.rotation().col((best - 6) / 3);
+    const Eigen::Vector3d v = p.b.rotation().col((best - 6) % 3);
     Eigen::Vector3d n;
     for (int c = 0; c < 3; ++c) {
       const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;

@@ -54,13 +54,13 @@ TEST(PairCsv, Parses3DRows) {
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].a.center, Eigen::Vector3d(0, 0, 0));
   EXPECT_EQ(rows[0].a.half, Eigen::Vector3d(1, 2, 3));
-  EXPECT_TRUE(rows[0].a.rotation.isApprox(Eigen::Matrix3d::Identity(), 1e-15));
+  EXPECT_TRUE(rows[0].a.rotation().isApprox(Eigen::Matrix3d::Identity(), 1e-15));
   EXPECT_EQ(rows[0].b.center, Eigen::Vector3d(1, 2, 3));
   EXPECT_EQ(rows[0].b.half, Eigen::Vector3d(0.5, 0.5, 0.5));
   // 90 degrees about z, from a non-unit quaternion: box x axis becomes world y.
   EXPECT_EQ(rows[1].a.center, Eigen::Vector3d(5, 6, 7));
-  EXPECT_NEAR(rows[1].a.rotation(0, 0), 0.0, 1e-6);
-  EXPECT_NEAR(rows[1].a.rotation(1, 0), 1.0, 1e-6);
+  EXPECT_NEAR(rows[1].a.rotation()(0, 0), 0.0, 1e-6);
+  EXPECT_NEAR(rows[1].a.rotation()(1, 0), 1.0, 1e-6);
   EXPECT_EQ(rows[1].line, 2);
 }
 

@@ -112,7 +112,7 @@ TEST(Obb3Batch, StoresTheBoxesExactly) {
   ASSERT_EQ(batch.size(), boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     EXPECT_EQ(batch.box(i).center, boxes[i].center);
-    EXPECT_EQ(batch.box(i).rotation, boxes[i].rotation);
+    EXPECT_EQ(batch.box(i).rotation(), boxes[i].rotation());
     EXPECT_EQ(batch.box(i).half, boxes[i].half);
   }
   EXPECT_GE(batch.memoryBytes(), boxes.size() * 15 * sizeof(double));
@@ -185,8 +185,8 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
       if (angles) {
         // Another near-parallel pair's relative rotation, carried over to this A.
         const Pair3 other = test3::nearParallelPair(rng, 1e-3, 0.2);
-        const Eigen::Matrix3d relative = other.a.rotation.transpose() * other.b.rotation;
-        b = Obb3::fromQuaternion({0, 0, 0}, Eigen::Quaterniond(first.a.rotation * relative),
+        const Eigen::Matrix3d relative = other.a.rotation().transpose() * other.b.rotation();
+        b = Obb3::fromQuaternion({0, 0, 0}, Eigen::Quaterniond(first.a.rotation() * relative),
                                  2.0 * other.b.half);
       }
       const double reach = first.a.half.norm() + b.half.norm();
@@ -238,7 +238,7 @@ TEST(Obb3Batch, CrossedBeamsSeparatedByAnEdgeAxisOnEveryPath) {
     const Obb3 a =
         Obb3::fromQuaternion({1e7, -3e6, 2e5}, Eigen::Quaterniond::Identity(), {100.0, 0.5, 0.5});
     const Obb3 shape = Obb3::fromQuaternion({0, 0, 0}, tilt, {100.0, 0.5, 0.5});
-    const Eigen::Vector3d u = a.rotation.col(0).cross(shape.rotation.col(0)).normalized();
+    const Eigen::Vector3d u = a.rotation().col(0).cross(shape.rotation().col(0)).normalized();
     std::vector<Obb3> boxes;
     for (const double gap : {-1e-3, -1e-7, 1e-7, 1e-3, 2e-6}) {
       Obb3 b = shape;

@@ -211,7 +211,7 @@ TEST(FiniteOutput, Boxes3d) {
       const double c = b.center.cwiseAbs().maxCoeff(), room = kMaxCoordinate - b.half.sum();
       if (c > room) b.center *= 0.999 * room / c;
     }
-    const bool inputs_ok = a.rotation.allFinite() && b.rotation.allFinite() &&
+    const bool inputs_ok = a.rotation().allFinite() && b.rotation().allFinite() &&
                            a.aabb().min.allFinite() && a.aabb().max.allFinite();
     const SatResult3 r = collideObb3(a, b);
     const bool ok = inputs_ok && std::isfinite(r.separation) && r.normal.allFinite() &&

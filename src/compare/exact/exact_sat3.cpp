@@ -40,7 +40,7 @@ struct QBox {
 QBox toQ(const Obb3& box) {
   QBox q{toQ(box.center), {}, {}};
   for (int k = 0; k < 3; ++k) {
-    q.edge[k] = toQ(box.rotation.col(k));
+    q.edge[k] = toQ(box.rotation().col(k));
     q.half[k] = mpq_class(box.half[k]);
   }
   return q;
