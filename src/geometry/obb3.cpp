@@ -73,15 +73,71 @@ Eigen::Vector3d accurateCross(const Eigen::Vector3d& u, const Eigen::Vector3d& v
           diffOfProducts(u.x(), v.y(), u.y(), v.x())};
 }
 
-// The pair seen from A (Gottschalk et al., OBBTree, 1996; Ericson, RTCD 4.4.1), in plain arrays so
-// that the compiler keeps everything in registers.
+// Three doubles as two pairs, the fourth lane padding: the x86-64 baseline (SSE2) works on two
+// doubles per instruction, and GCC and Clang lower these vector types to it (to scalars on targets
+// without). Each lane does the IEEE operations of the scalar formula it stands for, in its order.
+using V2 = double __attribute__((vector_size(16)));
+using M2 = long long __attribute__((vector_size(16)));
+
+struct V3 {
+  V2 lo;  // lanes 0, 1
+  V2 hi;  // lane 2, padding
+};
+
+[[gnu::always_inline]] inline V3 operator+(const V3& u, const V3& v) {
+  return {u.lo + v.lo, u.hi + v.hi};
+}
+[[gnu::always_inline]] inline V3 operator-(const V3& u, const V3& v) {
+  return {u.lo - v.lo, u.hi - v.hi};
+}
+[[gnu::always_inline]] inline V3 operator*(const V3& u, const V3& v) {
+  return {u.lo * v.lo, u.hi * v.hi};
+}
+[[gnu::always_inline]] inline V3 operator*(const V3& u, double s) {
+  return {u.lo * V2{s, s}, u.hi * V2{s, s}};
+}
+[[gnu::always_inline]] inline V2 abs2(V2 x) {
+  constexpr long long kNoSign = 0x7fffffffffffffffLL;
+  return reinterpret_cast<V2>(reinterpret_cast<M2>(x) & M2{kNoSign, kNoSign});
+}
+[[gnu::always_inline]] inline V3 abs3(const V3& u) {
+  return {abs2(u.lo), abs2(u.hi)};
+}
+// Lane k of next1(u) is lane k + 1 (mod 3) of u, of next2(u) lane k + 2.
+[[gnu::always_inline]] inline V3 next1(const V3& u) {
+  return {__builtin_shufflevector(u.lo, u.hi, 1, 2), __builtin_shufflevector(u.lo, u.lo, 0, 0)};
+}
+[[gnu::always_inline]] inline V3 next2(const V3& u) {
+  return {__builtin_shufflevector(u.hi, u.lo, 0, 2), __builtin_shufflevector(u.lo, u.lo, 1, 1)};
+}
+[[gnu::always_inline]] inline V3 gather3(double x, double y, double z) {
+  return {V2{x, y}, V2{z, z}};
+}
+[[gnu::always_inline]] inline double lane(const V3& u, int k) {
+  return k == 0 ? u.lo[0] : k == 1 ? u.lo[1] : u.hi[0];
+}
+template <int K>
+[[gnu::always_inline]] inline double lane(const V3& u) {
+  if constexpr (K < 2) return u.lo[K];
+  return u.hi[0];
+}
+// Lanes 0-2 of a comparison's result all true.
+[[gnu::always_inline]] inline bool all3(M2 lo, M2 hi) {
+  return (lo[0] & lo[1] & hi[0]) != 0;
+}
+
+// The pair seen from A (Gottschalk et al., OBBTree, 1996; Ericson, RTCD 4.4.1). The vectors run
+// over A's axes k; col[j] is column j of R = A^T B.
 struct Pose3 {
   Eigen::Vector3d d;  // cB - cA, world frame, subtracted in double first (STYLE 8)
-  double t[3];        // d in A's frame: a_k . d
+  V3 t;               // d in A's frame: a_k . d
   double tb[3];       // d in B's frame: b_k . d
-  double r[3][3];     // A^T B: a_k . b_j
-  double absr[3][3];  // |A^T B|
-  double face[6];     // gaps on faces 0-2 of A and 0-2 of B
+  V3 col[3];          // a_k . b_j
+  V3 abscol[3];       // |a_k . b_j|
+  V3 face_a;          // gaps on A's faces
+  double face_b[3];   // gaps on B's faces
+  [[nodiscard]] double r(int k, int j) const { return lane(col[j], k); }
+  [[nodiscard]] double face(int k) const { return k < 3 ? lane(face_a, k) : face_b[k - 3]; }
 };
 
 [[gnu::always_inline]] inline double dot3(const double* u, const double* v) {
@@ -102,30 +158,30 @@ template <int N, class F>
 }
 
 // Face gaps, 0-2 faces of A, 3-5 of B. The oracle's face normal is the cross product of the other
-// two stored columns, which differs from column k by ~1e-16 in direction: ~1e-14 m.
+// two stored columns, which differs from column k by ~1e-16 in direction: ~1e-14 m. Lane k of t and
+// of col[j] is dot3 of A's column k with d and b_j, term by term in dot3's order.
 [[gnu::always_inline]] inline Pose3 relativePose(const Obb3& a, const Obb3& b) {
   Pose3 p;
   p.d = b.center - a.center;
   const double* ra = a.rotation().data();  // column-major: column k at 3k
   const double* rb = b.rotation().data();
-  const double* ha = a.half.data();
   const double* hb = b.half.data();
-  staticFor<3>([&](auto kc) {
-    constexpr int k = decltype(kc)::value;
-    p.t[k] = dot3(ra + 3 * k, p.d.data());
-    p.tb[k] = dot3(rb + 3 * k, p.d.data());
-    staticFor<3>([&](auto jc) {
-      constexpr int j = decltype(jc)::value;
-      p.r[k][j] = dot3(ra + 3 * k, rb + 3 * j);
-      p.absr[k][j] = std::abs(p.r[k][j]);
-    });
+  const V3 ax = gather3(ra[0], ra[3], ra[6]);  // component x of A's three columns
+  const V3 ay = gather3(ra[1], ra[4], ra[7]);
+  const V3 az = gather3(ra[2], ra[5], ra[8]);
+  const V3 ha = gather3(a.half.x(), a.half.y(), a.half.z());
+  p.t = ax * p.d.x() + ay * p.d.y() + az * p.d.z();
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    p.col[j] = ax * rb[3 * j] + ay * rb[3 * j + 1] + az * rb[3 * j + 2];
+    p.abscol[j] = abs3(p.col[j]);
+    p.tb[j] = dot3(rb + 3 * j, p.d.data());
   });
-  staticFor<3>([&](auto kc) {
-    constexpr int k = decltype(kc)::value;
-    p.face[k] = std::abs(p.t[k]) - ha[k] -
-                (p.absr[k][0] * hb[0] + p.absr[k][1] * hb[1] + p.absr[k][2] * hb[2]);
-    p.face[3 + k] = std::abs(p.tb[k]) - hb[k] -
-                    (p.absr[0][k] * ha[0] + p.absr[1][k] * ha[1] + p.absr[2][k] * ha[2]);
+  p.face_a = abs3(p.t) - ha - (p.abscol[0] * hb[0] + p.abscol[1] * hb[1] + p.abscol[2] * hb[2]);
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    const V3 radius = p.abscol[j] * ha;
+    p.face_b[j] = std::abs(p.tb[j]) - hb[j] - (radius.lo[0] + radius.lo[1] + radius.hi[0]);
   });
   return p;
 }
@@ -155,38 +211,44 @@ struct EdgeFilter {
   return {(32.0 * kU + 6.0 * phi) * scale, root * root};
 }
 
-// Edge axis a_i x b_j in A's frame: gap times axis length, and the squared length.
-struct FastEdge {
-  double gap;
-  double length2;
+// Edge axes a_i x b_j in A's frame, gap times axis length and squared length: lane i of gap[j] and
+// of length2[j] is edge axis (i, j), e = 3i + j.
+struct FastEdges {
+  V3 gap[3];
+  V3 length2[3];
+  [[nodiscard]] double gapOf(int e) const { return lane(gap[e % 3], e / 3); }
+  [[nodiscard]] double length2Of(int e) const { return lane(length2[e % 3], e / 3); }
 };
 
-template <int I, int J>
-[[gnu::always_inline]] inline FastEdge fastEdge(const double* ha, const double* hb,
-                                                const Pose3& p) {
-  constexpr int i1 = (I + 1) % 3, i2 = (I + 2) % 3, j1 = (J + 1) % 3, j2 = (J + 2) % 3;
-  // e_i x r_j = r_{i1 j} e_{i2} - r_{i2 j} e_{i1}; its dot products with A's other axes are R
-  // entries of rows i2 and i1, with B's other axes entries of row i (B's columns j x j1 = j2).
-  const double along = p.t[i2] * p.r[i1][J] - p.t[i1] * p.r[i2][J];
-  const double ra = ha[i1] * p.absr[i2][J] + ha[i2] * p.absr[i1][J];
-  const double rb = hb[j1] * p.absr[I][j2] + hb[j2] * p.absr[I][j1];
-  return {std::abs(along) - ra - rb, p.r[i1][J] * p.r[i1][J] + p.r[i2][J] * p.r[i2][J]};
-}
-
-// fastEdge for all nine edge axes, e = 3i + j.
-[[gnu::always_inline]] inline void fastEdges(const Obb3& a, const Obb3& b, const Pose3& p,
-                                             FastEdge (&out)[9]) {
-  staticFor<9>([&](auto ec) {
-    constexpr int e = decltype(ec)::value;
-    out[e] = fastEdge<e / 3, e % 3>(a.half.data(), b.half.data(), p);
+// All nine, three per column j of R. Lane i is the scalar formula, with i1, i2 = i + 1, i + 2 and
+// j1, j2 = j + 1, j + 2 (mod 3): e_i x r_j = r_i1j e_i2 - r_i2j e_i1; its dot products with A's
+// other axes are R entries of rows i2 and i1, with B's other axes entries of row i (B's columns
+// j x j1 = j2):
+//   along = t_i2 r_i1j - t_i1 r_i2j,  ra = ha_i1 |r_i2j| + ha_i2 |r_i1j|,
+//   rb = |r_ij2| hb_j1 + |r_ij1| hb_j2,  gap = |along| - ra - rb,  length2 = r_i1j^2 + r_i2j^2.
+[[gnu::always_inline]] inline FastEdges fastEdges(const Obb3& a, const Obb3& b, const Pose3& p) {
+  FastEdges out;
+  const V3 ha = gather3(a.half.x(), a.half.y(), a.half.z());
+  const V3 t1 = next1(p.t), t2 = next2(p.t);
+  const V3 ha1 = next1(ha), ha2 = next2(ha);
+  const double* hb = b.half.data();
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    const V3 r1 = next1(p.col[j]), r2 = next2(p.col[j]);
+    const V3 along = t2 * r1 - t1 * r2;
+    const V3 ra = ha1 * abs3(r2) + ha2 * abs3(r1);
+    const V3 rb = p.abscol[j2] * hb[j1] + p.abscol[j1] * hb[j2];
+    out.gap[j] = abs3(along) - ra - rb;
+    out.length2[j] = r1 * r1 + r2 * r2;
   });
+  return out;
 }
 
-// The world-frame unit axis of fastEdge (i, j), pointing from A towards B.
+// The world-frame unit axis of fast edge (i, j), pointing from A towards B.
 Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose3& p, int i, int j) {
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-  const Eigen::Vector3d n = a.rotation().col(i2) * p.r[i1][j] - a.rotation().col(i1) * p.r[i2][j];
-  const double along = p.t[i2] * p.r[i1][j] - p.t[i1] * p.r[i2][j];
+  const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
+  const double along = lane(p.t, i2) * p.r(i1, j) - lane(p.t, i1) * p.r(i2, j);
   return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
 }
 
@@ -221,17 +283,21 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   return true;
 }
 
-// g[e] = gap[e] / sqrt(length2[e]) for e = 0..9, two at a time on SSE2 (the x86-64 baseline): the
-// same correctly rounded operations as the scalar loop, so the same bits either way.
-[[gnu::always_inline]] inline void normalisedGaps(const double (&gap)[10],
-                                                  const double (&length2)[10], double (&g)[10]) {
+// gap / sqrt(length2) lane by lane; on SSE2 one sqrtpd and one divpd, the same correctly rounded
+// operations as the scalar form, so the same bits either way.
+[[gnu::always_inline]] inline V2 normalised2(V2 gap, V2 length2) {
 #if defined(__SSE2__)
-  for (int e = 0; e < 10; e += 2) {
-    _mm_storeu_pd(g + e, _mm_div_pd(_mm_loadu_pd(gap + e), _mm_sqrt_pd(_mm_loadu_pd(length2 + e))));
-  }
+  return gap / static_cast<V2>(_mm_sqrt_pd(length2));
 #else
-  for (int e = 0; e < 10; ++e) g[e] = gap[e] / std::sqrt(length2[e]);
+  return V2{gap[0] / std::sqrt(length2[0]), gap[1] / std::sqrt(length2[1])};
 #endif
+}
+
+// Lane by lane max(u, v) (u where u > v).
+[[gnu::always_inline]] inline V2 max2(V2 u, V2 v) {
+  const M2 take_u = u > v;
+  return reinterpret_cast<V2>((take_u & reinterpret_cast<M2>(u)) |
+                              (~take_u & reinterpret_cast<M2>(v)));
 }
 
 // The first largest of the fifteen candidate gaps (faces, then edges 3i + j): `!(g > best)` keeps
@@ -248,32 +314,40 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
-  double best = p.face[0];
+  double best = p.face_a.lo[0];
   int best_index = 0;
-  staticFor<5>([&](auto kc) {
-    constexpr int k = decltype(kc)::value + 1;
-    pickLargest(p.face[k], k, best, best_index);
+  pickLargest(p.face_a.lo[1], 1, best, best_index);
+  pickLargest(p.face_a.hi[0], 2, best, best_index);
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    pickLargest(p.face_b[j], 3 + j, best, best_index);
   });
-  FastEdge fast[9];
-  fastEdges(a, b, p, fast);
+  const FastEdges fast = fastEdges(a, b, p);
   const EdgeFilter filter = edgeFilter(a, b, p);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
   // candidates are the fast ones; they are normalised together and compared without branches.
-  bool sure = true;
-  double gap[10], length2[10], g[10];
-  staticFor<9>([&](auto ec) {
-    constexpr int e = decltype(ec)::value;
-    sure &= (std::abs(fast[e].gap) > filter.bound) & (fast[e].length2 > filter.min_length2);
-    gap[e] = fast[e].gap;
-    length2[e] = fast[e].length2;
+  const V2 bound{filter.bound, filter.bound};
+  const V2 min_length2{filter.min_length2, filter.min_length2};
+  M2 sure_lo = abs2(fast.gap[0].lo) > bound, sure_hi = abs2(fast.gap[0].hi) > bound;
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    if constexpr (j > 0) {
+      sure_lo &= abs2(fast.gap[j].lo) > bound;
+      sure_hi &= abs2(fast.gap[j].hi) > bound;
+    }
+    sure_lo &= fast.length2[j].lo > min_length2;
+    sure_hi &= fast.length2[j].hi > min_length2;
   });
-  if (sure) {
-    gap[9] = 0.0;
-    length2[9] = 1.0;
-    normalisedGaps(gap, length2, g);
+  if (all3(sure_lo, sure_hi)) {
+    V3 g[3];
+    staticFor<3>([&](auto jc) {
+      constexpr int j = decltype(jc)::value;
+      g[j] = {normalised2(fast.gap[j].lo, fast.length2[j].lo),
+              normalised2(fast.gap[j].hi, fast.length2[j].hi)};
+    });
     staticFor<9>([&](auto ec) {
-      constexpr int e = decltype(ec)::value;
-      pickLargest(g[e], 6 + e, best, best_index);
+      constexpr int e = decltype(ec)::value, i = e / 3, j = e % 3;
+      pickLargest(lane<i>(g[j]), 6 + e, best, best_index);
     });
     r.separation = best;
     r.axis_index = best_index;
@@ -290,9 +364,9 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     bool fast_winner = false;
     bool accurate_winner = false;
     for (int e = 0; e < 9; ++e) {
-      const FastEdge& f = fast[e];
-      if (std::abs(f.gap) > filter.bound && f.length2 > filter.min_length2) {
-        const double ge = f.gap / std::sqrt(f.length2);
+      const double gap = fast.gapOf(e), length2 = fast.length2Of(e);
+      if (std::abs(gap) > filter.bound && length2 > filter.min_length2) {
+        const double ge = gap / std::sqrt(length2);
         if (!(ge > r.separation)) continue;
         r.separation = ge;
         r.axis_index = 6 + e;
@@ -310,8 +384,9 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
       accurate_winner = true;
     }
     if (fast_winner || accurate_winner) {
-      if (fast_winner)
+      if (fast_winner) {
         r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+      }
       r.hit = r.separation <= 0.0;
       assert(isFinite(r));
       return r;
@@ -320,7 +395,7 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   // A face axis wins: the stored column, pointing from A towards B.
   if (r.axis_index < 3) {
     r.normal = a.rotation().col(r.axis_index);
-    if (p.t[r.axis_index] < 0.0) r.normal = -r.normal;
+    if (lane(p.t, r.axis_index) < 0.0) r.normal = -r.normal;
   } else {
     r.normal = b.rotation().col(r.axis_index - 3);
     if (p.tb[r.axis_index - 3] < 0.0) r.normal = -r.normal;
@@ -333,18 +408,18 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
 bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
   const Pose3 p = relativePose(a, b);
-  double face = p.face[0];
-  for (int k = 1; k < 6; ++k) face = std::max(face, p.face[k]);
+  const double face = std::max(
+      {p.face_a.lo[0], p.face_a.lo[1], p.face_a.hi[0], p.face_b[0], p.face_b[1], p.face_b[2]});
   if (face > 0.0) return false;
-  FastEdge fast[9];
-  fastEdges(a, b, p, fast);
-  double largest = fast[0].gap;
-  for (int e = 1; e < 9; ++e) largest = std::max(largest, fast[e].gap);
+  const FastEdges fast = fastEdges(a, b, p);
+  const V2 lo = max2(max2(fast.gap[0].lo, fast.gap[1].lo), fast.gap[2].lo);
+  const V2 hi = max2(max2(fast.gap[0].hi, fast.gap[1].hi), fast.gap[2].hi);
+  const double largest = std::max({lo[0], lo[1], hi[0]});
   const EdgeFilter filter = edgeFilter(a, b, p);
   if (largest > filter.bound) return false;
   if (largest < -filter.bound) return true;
   for (int e = 0; e < 9; ++e) {
-    if (fast[e].gap < -filter.bound) continue;
+    if (fast.gapOf(e) < -filter.bound) continue;
     double g = 0.0;
     Eigen::Vector3d axis;
     if (edgeGap(a, b, p.d, e / 3, e % 3, g, axis) && g > 0.0) return false;
