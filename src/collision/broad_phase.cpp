@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "geometry/batch_path.hpp"
@@ -133,7 +134,7 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
   level.max_x.assign(stored, -kInfinity);
   level.max_y.assign(stored, -kInfinity);
   level.ids.assign(stored, 0);
-  level.row_bits.assign(static_cast<std::size_t>((level.ny + 63) / 64), 0);
+  level.row_bits.assign(static_cast<std::size_t>((level.ny + 63) / 64) + 1, 0);  // + a zero word
   std::vector<std::uint32_t> cursor(level.cell_start.begin(), level.cell_start.end() - 1);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t slot = cursor[cell_of[k]]++;
@@ -228,12 +229,34 @@ void UniformGrid::refreshViews() {
 }
 
 void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) const {
+#if defined(CARDEMO_BATCH_AVX2)
+  if (large_boxes_.empty() && batchPath() != BatchPath::kPortable) {
+    // The common case: a handful of ids, found and sorted in registers (an empty grid has no
+    // levels, and a query off every level's bounds or NaN finds nothing). They are handed over
+    // as a fixed eight, with no branch on how many, then cut to the count.
+    std::array<std::uint32_t, grid_detail::kFewIds> few;
+    const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
+    const std::size_t count =
+        grid_detail::scanFewAvx2(views_.data(), views_.size(), box, few.data());
+    if (count <= few.size()) [[likely]] {
+      out.clear();
+      out.resize(few.size());
+      std::memcpy(out.data(), few.data(), sizeof few);
+      out.resize(count);
+      return;
+    }
+  }
+#endif
+  queryBuffered(query, out);
+}
+
+void UniformGrid::queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const {
   out.clear();
   // Also rejects NaN boxes, since every comparison with NaN is false.
   if (size_ == 0 || !query.overlaps(bounds_)) return;
+  const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
   std::array<std::uint32_t, kQueryBuffer> buffer;  // deliberately not zeroed: written before read
   grid_detail::IdSink sink{buffer.data(), buffer.size(), 0, &spillInto, &out};
-  const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
 #if defined(CARDEMO_BATCH_AVX2)
   if (batchPath() != BatchPath::kPortable) {
     grid_detail::scanLevelsAvx2(views_.data(), views_.size(), box, sink);
@@ -254,8 +277,8 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
     sortIds(out.data(), out.data() + out.size());
     return;
   }
-  // The common case: everything fit in the buffer. Sort there, then append one by one (for a
-  // handful of ids cheaper than a call to memmove); `out` keeps its capacity between queries.
+  // Everything fit in the buffer. Sort there, then append one by one (for a handful of ids
+  // cheaper than a call to memmove); `out` keeps its capacity between queries.
   sortIds(buffer.data(), buffer.data() + sink.count);
   if (out.capacity() < sink.count) out.reserve(sink.count);
   for (std::size_t k = 0; k < sink.count; ++k) out.push_back(buffer[k]);

@@ -67,6 +67,9 @@ class UniformGrid {
   std::vector<Aabb2> large_boxes_;  // items too big for any level: tested by every query
   std::vector<std::uint32_t> large_ids_;
 
+  // The query when scanFewAvx2 is not used or finds more than it keeps: the scan stores ids to a
+  // buffer, which is then sorted.
+  void queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const;
   static Level buildLevel(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members);
   void refreshViews();
 };

@@ -63,17 +63,19 @@ struct Window {
          (l.bounds_min[1] <= q.max[1]) & (q.min[1] <= l.bounds_max[1]);
 }
 
-// The first occupied row at or after y, or a row past y_last when there is none up to y_last.
-// Empty rows (aisles, the gaps between parking rows) cost a bit scan, not two offset loads.
-[[gnu::always_inline]] inline std::int64_t nextOccupiedRow(const std::uint64_t* row_bits,
-                                                           std::int64_t y, std::int64_t y_last) {
-  std::uint64_t word = row_bits[y >> 6] >> (y & 63);
-  while (word == 0) {
-    y = (y | 63) + 1;
-    if (y > y_last) return y;
-    word = row_bits[y >> 6];
-  }
-  return y + __builtin_ctzll(word);
+// The occupied rows among base .. min(y_last, base + 63): bit r set when row base + r holds a box.
+// One funnel shift of two words (row_bits has a word past the last row's, so the second is always
+// there): empty rows (aisles, the gaps between parking rows) cost nothing, and a query's few rows
+// one bit scan each.
+[[gnu::always_inline]] inline std::uint64_t occupiedRows(const std::uint64_t* row_bits,
+                                                         std::int64_t base, std::int64_t y_last) {
+  const std::uint64_t* const w = row_bits + (base >> 6);
+  const unsigned shift = static_cast<unsigned>(base & 63);
+  // The second shift is split in two so that a zero `shift` is defined.
+  std::uint64_t rows = (w[0] >> shift) | ((w[1] << 1) << (63 - shift));
+  const std::int64_t last = y_last - base;
+  if (last < 63) rows &= (std::uint64_t{2} << last) - 1;
+  return rows;
 }
 
 // A level's box arrays, copied into a local before a scan: the scans store ids through
@@ -100,27 +102,28 @@ template <std::uint32_t kWidth, class Step>
     const std::uint32_t* const cell_start = l.cell_start;
     const std::uint64_t* const row_bits = l.row_bits;
     const std::int64_t nx = l.nx;
-    for (std::int64_t y = w.y0;; ++y) {
-      y = nextOccupiedRow(row_bits, y, w.y1);
-      if (y > w.y1) break;
-      const std::int64_t first_cell = y * nx;
-      std::uint32_t k = cell_start[first_cell + w.x0];
-      const std::uint32_t end = cell_start[first_cell + w.x1 + 1];
-      if (end - k + kScanStep <= capacity - count) [[likely]] {
-        // One step whatever the row holds (an empty row's lanes are all masked): most rows hold
-        // a handful of boxes, and a fixed step costs less than the branches that would skip it.
-        count = step(boxes, k, end, buffer, count);
-        for (k += kWidth; k < end; k += kWidth) count = step(boxes, k, end, buffer, count);
-        continue;
-      }
-      // The row's boxes may not fit in what is left of the buffer: empty it when needed.
-      for (; k < end; k += kWidth) {
-        if (capacity - count < kScanStep) {
-          sink.count = count;
-          sink.flush(sink);
-          count = sink.count;
+    for (std::int64_t base = w.y0; base <= w.y1; base += 64) {
+      for (std::uint64_t rows = occupiedRows(row_bits, base, w.y1); rows != 0; rows &= rows - 1) {
+        const std::int64_t first_cell = (base + __builtin_ctzll(rows)) * nx;
+        std::uint32_t k = cell_start[first_cell + w.x0];
+        const std::uint32_t end = cell_start[first_cell + w.x1 + 1];
+        if (end - k + kScanStep <= capacity - count) [[likely]] {
+          // One step whatever the row holds (an empty row's lanes are all masked): most rows
+          // hold a handful of boxes, and a fixed step costs less than the branches that would
+          // skip it.
+          count = step(boxes, k, end, buffer, count);
+          for (k += kWidth; k < end; k += kWidth) count = step(boxes, k, end, buffer, count);
+          continue;
         }
-        count = step(boxes, k, end, buffer, count);
+        // The row's boxes may not fit in what is left of the buffer: empty it when needed.
+        for (; k < end; k += kWidth) {
+          if (capacity - count < kScanStep) {
+            sink.count = count;
+            sink.flush(sink);
+            count = sink.count;
+          }
+          count = step(boxes, k, end, buffer, count);
+        }
       }
     }
   }

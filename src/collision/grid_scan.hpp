@@ -31,7 +31,8 @@ inline constexpr std::size_t kScanPadding = kScanStep;
 /// One level of the grid as plain data, struct of arrays: box k is [min_x[k], max_x[k]] x
 /// [min_y[k], max_y[k]] in world metres, with item id ids[k]; boxes are grouped by the cell of
 /// their lower-left corner, cells in row-major order, cell c holding [cell_start[c],
-/// cell_start[c + 1]). Bit y % 64 of row_bits[y / 64] is set when row y holds a box.
+/// cell_start[c + 1]). Bit y % 64 of row_bits[y / 64] is set when row y holds a box; row_bits
+/// has one word (zero) past the last row's.
 struct LevelArrays {
   const double *min_x, *min_y, *max_x, *max_y;  ///< Box bounds, metres.
   const std::uint32_t* ids;                     ///< Item ids.
@@ -57,5 +58,15 @@ void scanLevelsPortable(const LevelArrays* levels, std::size_t level_count, cons
 /// The same with AVX2; call only when geometry/batch_path says the CPU has it.
 void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& query,
                     IdSink& sink);
+
+/// Most ids scanFewAvx2 hands back.
+inline constexpr std::size_t kFewIds = 8;
+
+/// The common case of a query, with AVX2: returns how many boxes touch the query and, when that
+/// is at most kFewIds, writes their ids to few[0, kFewIds) in increasing order (the slots past the
+/// count hold 0xFFFFFFFF). A larger count leaves `few` unspecified: run scanLevelsAvx2 instead.
+/// Writes nothing else to memory. Call only when geometry/batch_path says the CPU has AVX2.
+std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& query,
+                        std::uint32_t* few);
 
 }  // namespace cardemo::grid_detail

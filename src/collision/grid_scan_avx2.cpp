@@ -41,6 +41,49 @@ constexpr Compress kCompress;
 // Lanes [0, n) of a step, for the n boxes left in a row (4 or more: all).
 constexpr std::uint8_t kLive[5] = {0x0, 0x1, 0x3, 0x7, 0xF};
 
+// The tables of scanFewAvx2's step, together so that one register addresses both. slot[c][m]: for
+// the count c of ids found before and a mask m of found lanes, for each of the eight result slots,
+// 0x80 | the lane whose id goes there (slots c .. c + found - 1), else 0 (keep the slot).
+// Sign-extended to 32 bits this is both the vpermd index (low three bits) and the blend mask.
+// advance[m]: the found lanes of m, in steps of slot[c] to slot[c + 1].
+struct FewTables {
+  std::uint8_t slot[kFewIds + 1][16][8];
+  std::uint16_t advance[16];
+  constexpr FewTables() : slot{}, advance{} {
+    for (unsigned m = 0; m < 16; ++m) {
+      unsigned n = 0;
+      for (unsigned lane = 0; lane < 4; ++lane) {
+        if (((m >> lane) & 1u) == 0) continue;
+        for (unsigned c = 0; c + n < kFewIds; ++c) {
+          slot[c][m][c + n] = static_cast<std::uint8_t>(0x80 | lane);
+        }
+        ++n;
+      }
+      advance[m] = static_cast<std::uint16_t>(n * sizeof slot[0]);
+    }
+  }
+};
+constexpr FewTables kFew;
+
+// One compare-exchange round of a sorting network: each slot against the slot `partner` puts in
+// its place; the slots set in kTakeMax keep the larger value.
+template <int kTakeMax>
+[[gnu::always_inline]] inline __m256i exchange(__m256i v, __m256i partner) {
+  return _mm256_blend_epi32(_mm256_min_epu32(v, partner), _mm256_max_epu32(v, partner), kTakeMax);
+}
+
+// Sorts the eight unsigned slots increasing: Batcher's bitonic sorter, each merge comparing a
+// block with its mirror image first.
+[[gnu::always_inline]] inline __m256i sort8(__m256i v) {
+  v = exchange<0xAA>(v, _mm256_shuffle_epi32(v, 0xB1));  // sorted pairs
+  v = exchange<0xCC>(v, _mm256_shuffle_epi32(v, 0x1B));  // sorted fours: mirror, then
+  v = exchange<0xAA>(v, _mm256_shuffle_epi32(v, 0xB1));  // neighbours
+  v = exchange<0xF0>(v, _mm256_shuffle_epi32(_mm256_permute4x64_epi64(v, 0x4E), 0x1B));
+  v = exchange<0xCC>(v, _mm256_shuffle_epi32(v, 0x4E));  // sorted eight: mirror, then distance 2,
+  v = exchange<0xAA>(v, _mm256_shuffle_epi32(v, 0xB1));  // then neighbours
+  return v;
+}
+
 }  // namespace
 
 void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& q,
@@ -64,6 +107,78 @@ void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const Qu
     return count + kCompress.count[bits];
   };
   scanLevels<4>(levels, level_count, q, sink, step4);
+}
+
+std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& q,
+                        std::uint32_t* few) {
+  const __m256d qmin_x = _mm256_set1_pd(q.min[0]), qmin_y = _mm256_set1_pd(q.min[1]);
+  const __m256d qmax_x = _mm256_set1_pd(q.max[0]), qmax_y = _mm256_set1_pd(q.max[1]);
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+  // The ids found so far, in scan order, in a register: each step moves its found ids (up to
+  // four) into slots count .. count + found - 1 with one permute and one blend. `at` is the
+  // count in rows of kFew.slot.
+  __m256 found = _mm256_setzero_ps();
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < level_count; ++i) {
+    // No test against the level's bounds: off them the window is clamped to the edge cells, whose
+    // boxes the query does not touch (and a NaN query touches nothing).
+    const LevelArrays& l = levels[i];
+    const Window w = windowOf(l, q);
+    if (w.x1 < w.x0) continue;  // an inverted query
+    const double *const min_x = l.min_x, *const min_y = l.min_y;
+    const double *const max_x = l.max_x, *const max_y = l.max_y;
+    const std::uint32_t* const ids = l.ids;
+    const std::int64_t nx = l.nx;
+    for (std::int64_t base = w.y0; base <= w.y1; base += 56) {
+      // Row base + r holds the boxes [first[r * nx], end[r * nx]) of the window.
+      const std::uint32_t* const first = l.cell_start + base * nx + w.x0;
+      const std::uint32_t* const end = l.cell_start + base * nx + w.x1 + 1;
+      // Rows base .. base + 55 from one unaligned load (x86 is little-endian, so bit y of the
+      // bit set is bit y % 8 of byte y / 8; the word past the last row's keeps the load inside).
+      std::uint64_t rows;
+      __builtin_memcpy(&rows, reinterpret_cast<const unsigned char*>(l.row_bits) + (base >> 3),
+                       sizeof rows);
+      rows >>= base & 7;
+      const std::int64_t last = w.y1 - base;
+      rows &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
+      for (; rows != 0; rows &= rows - 1) {
+        const std::int64_t row = __builtin_ctzll(rows) * nx;
+        std::uint32_t k = first[row];
+        const std::uint32_t stop = end[row];
+        // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
+        do {
+          // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found.
+          __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(min_x + k), qmax_x, _CMP_LE_OQ),
+                                     _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(max_x + k), _CMP_LE_OQ));
+          in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(min_y + k), qmax_y, _CMP_LE_OQ));
+          in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(max_y + k), _CMP_LE_OQ));
+          // Only the lanes of this row's boxes.
+          const __m256i left = _mm256_set1_epi64x(static_cast<long long>(stop) - k);
+          in = _mm256_and_pd(in, _mm256_castsi256_pd(_mm256_cmpgt_epi64(left, lane)));
+          const unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(in));
+          const __m256i slots = _mm256_cvtepi8_epi32(
+              _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kFew.slot[0][bits][0] + at)));
+          const __m256i lanes =
+              _mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + k)));
+          found = _mm256_blendv_ps(found,
+                                   _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(lanes, slots)),
+                                   _mm256_castsi256_ps(slots));
+          at += kFew.advance[bits];
+          // More than kept: the caller scans again.
+          if (at > kFewIds * sizeof kFew.slot[0]) [[unlikely]]
+            return kFewIds + 1;
+          k += 4;
+        } while (k < stop);
+      }
+    }
+  }
+  const std::size_t count = at / sizeof kFew.slot[0];
+  // Slots past the count sort last.
+  const __m256i unused = _mm256_cmpgt_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7),
+                                            _mm256_set1_epi32(static_cast<int>(count) - 1));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(few),
+                      sort8(_mm256_or_si256(_mm256_castps_si256(found), unused)));
+  return count;
 }
 
 }  // namespace cardemo::grid_detail
