@@ -17,8 +17,8 @@ namespace cardemo {
 /// per-frame path never allocates.
 struct ConvexPolygon {
   static constexpr int kMaxVertices = 16;                ///< Capacity (the scene format's limit).
-  std::array<Eigen::Vector2d, kMaxVertices> vertices{};  ///< First `count` are used, CCW.
   int count = 0;                                         ///< Number of vertices in use.
+  std::array<Eigen::Vector2d, kMaxVertices> vertices{};  ///< First `count` are used, CCW.
 
   /// Builds a polygon from points in either winding. Returns nullopt and sets `why` when the points
   /// are fewer than 3, more than kMaxVertices, not finite, collinear/degenerate, repeated or not

@@ -77,6 +77,18 @@ struct Double2 {
 [[gnu::always_inline]] inline double lane1(Double2 a) {
   return _mm_cvtsd_f64(_mm_unpackhi_pd(a.v, a.v));
 }
+/// (lane 0 of a, lane 0 of b).
+[[gnu::always_inline]] inline Double2 lows(Double2 a, Double2 b) {
+  return {_mm_unpacklo_pd(a.v, b.v)};
+}
+/// (lane 1 of a, lane 1 of b).
+[[gnu::always_inline]] inline Double2 highs(Double2 a, Double2 b) {
+  return {_mm_unpackhi_pd(a.v, b.v)};
+}
+/// (lane 0 of a, lane 1 of b).
+[[gnu::always_inline]] inline Double2 blend(Double2 a, Double2 b) {
+  return {_mm_move_sd(b.v, a.v)};
+}
 
 #else
 
@@ -145,6 +157,18 @@ inline double lane0(Double2 a) {
 /// Lane 1.
 inline double lane1(Double2 a) {
   return a.v[1];
+}
+/// (lane 0 of a, lane 0 of b).
+inline Double2 lows(Double2 a, Double2 b) {
+  return {{a.v[0], b.v[0]}};
+}
+/// (lane 1 of a, lane 1 of b).
+inline Double2 highs(Double2 a, Double2 b) {
+  return {{a.v[1], b.v[1]}};
+}
+/// (lane 0 of a, lane 1 of b).
+inline Double2 blend(Double2 a, Double2 b) {
+  return {{a.v[0], b.v[1]}};
 }
 
 #endif

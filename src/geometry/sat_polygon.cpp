@@ -338,10 +338,88 @@ SatResult2 collide(const Shape& a, const Shape& b) {
   return r;
 }
 
+// Two polygons of kN vertices each, without copying either into a Shape. The pair is symmetric,
+// so one register holds both: lane 0 measures A's edge normal q against B and lane 1 B's edge
+// normal q against A, with the operations of measureAxes in its order (same answer bit for bit).
+// False, with nothing written, when the pair is outside the fast path's range.
+template <int kN>
+bool collideEqualCounts(const ConvexPolygon& a, const ConvexPolygon& b, SatResult2& r) {
+  const Double2 ref = simd::load(a.vertex(0).data());
+  // Per vertex i: own = (A's, B's) coordinate, other = (B's, A's); per edge i: its normal.
+  Double2 own_x[kN], own_y[kN], other_x[kN], other_y[kN], nx[kN], ny[kN];
+  Double2 largest = simd::make(0.0, 0.0);
+  for (int i = 0; i < kN; ++i) {
+    const Double2 va = simd::load(a.vertex(i).data()), vb = simd::load(b.vertex(i).data());
+    const Double2 wa = simd::load(a.vertex((i + 1) % kN).data());
+    const Double2 wb = simd::load(b.vertex((i + 1) % kN).data());
+    const Double2 la = va - ref, lb = vb - ref;
+    largest = simd::max(largest, simd::max(simd::abs(la), simd::abs(lb)));
+    own_x[i] = simd::lows(la, lb);
+    own_y[i] = simd::highs(la, lb);
+    other_x[i] = simd::lows(lb, la);
+    other_y[i] = simd::highs(lb, la);
+    // As fillPolygon: (next.y - v.y, v.x - next.x) from world coordinates.
+    nx[i] = simd::highs(wa - va, wb - vb);
+    ny[i] = simd::lows(va - wa, vb - wb);
+  }
+  alignas(16) double forward[kN][2], backward[kN][2], key[kN][2];
+  Double2 largest_key = simd::make(kMinusInfinity, kMinusInfinity);
+  Double2 smallest_length2 = simd::make(kPlusInfinity, kPlusInfinity);
+  for (int q = 0; q < kN; ++q) {
+    const Double2 x = nx[q], y = ny[q];
+    const Double2 hi = x * own_x[q] + y * own_y[q];
+    Double2 lo = x * own_x[(q + 2) % kN] + y * own_y[(q + 2) % kN];
+    for (int j = 3; j < kN; ++j)
+      lo = simd::min(lo, x * own_x[(q + j) % kN] + y * own_y[(q + j) % kN]);
+    Double2 other_lo = x * other_x[0] + y * other_y[0];
+    Double2 other_hi = other_lo;
+    for (int k = 1; k < kN; ++k) {
+      const Double2 d = x * other_x[k] + y * other_y[k];
+      other_lo = simd::min(other_lo, d);
+      other_hi = simd::max(other_hi, d);
+    }
+    // Towards B: A's forward gap is B's low end past A's high end; B's is the other way round.
+    const Double2 u = other_lo - hi, v = lo - other_hi;
+    const Double2 f = simd::blend(u, v), g = simd::blend(v, u);
+    const Double2 gap = simd::max(f, g);
+    const Double2 length2 = x * x + y * y;
+    const Double2 k = gap * simd::abs(gap) / length2;
+    simd::storeAligned(forward[q], f);
+    simd::storeAligned(backward[q], g);
+    simd::storeAligned(key[q], k);
+    largest_key = simd::max(largest_key, k);
+    smallest_length2 = simd::min(smallest_length2, length2);
+  }
+  if (!(std::max(simd::lane0(largest), simd::lane1(largest)) < kLargestFastCoordinate &&
+        std::min(simd::lane0(smallest_length2), simd::lane1(smallest_length2)) >
+            kSmallestFastLength2)) {
+    return false;
+  }
+  // As winner(): the first slot (A's axes, then B's) with the largest key.
+  const double top = std::max(simd::lane0(largest_key), simd::lane1(largest_key));
+  int w = 0;
+  while (w + 1 < 2 * kN && !(key[w % kN][w / kN] == top)) ++w;
+  const int q = w % kN, lane = w / kN;
+  const double f = forward[q][lane], g = backward[q][lane];
+  const double n_x = lane == 0 ? simd::lane0(nx[q]) : simd::lane1(nx[q]);
+  const double n_y = lane == 0 ? simd::lane0(ny[q]) : simd::lane1(ny[q]);
+  const double length = std::sqrt(n_x * n_x + n_y * n_y);
+  r.separation = (f > g ? f : g) / length;
+  r.normal = f >= g ? Eigen::Vector2d(n_x / length, n_y / length)
+                    : Eigen::Vector2d(-n_x / length, -n_y / length);
+  r.hit = r.separation <= 0.0;
+  return true;
+}
+
 }  // namespace
 
 SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
   assert(inDomain(a) && inDomain(b));
+  SatResult2 r;
+  if (a.count == 4 && b.count == 4 && collideEqualCounts<4>(a, b, r)) {
+    assert(isFinite(r));
+    return r;
+  }
   const Eigen::Vector2d& ref = a.vertex(0);
   return collide(polygonShape(a, ref), polygonShape(b, ref));
 }
