@@ -297,7 +297,7 @@ TEST(Hud, HealthBarFillIsProportionalToHealth) {
 }
 
 TEST(Hud, HealthBarInTheFrameFollowsTheWorldsHealth) {
-  // A crash at 10 m/s into A takes health (contact at rest no longer does).
+  // A crash at 10 m/s into A takes health; contact at rest takes none.
   Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
   scene.player.speed = 10.0;
   World world(std::move(scene));
