@@ -10,6 +10,7 @@ every pair (no shortcut from cardemo's own separation). --skip NAME leaves a rep
 --csv FILE also keeps the sweep's CSV (for scripts/plot_box2d_offsets.py and
 scripts/plot_cost_error.py --sweep-csv FILE, which then need not run the sweep again).
 """
+import argparse
 import glob
 import json
 import os
@@ -26,25 +27,19 @@ def hits_of(obj):
 
 
 def main(argv):
-    binary = os.path.join(ROOT, "build", "cardemo")
-    pairs, seed = "1000000", "1"
-    skip, radius, sweep_csv = set(), {}, None
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        if a == "--pairs":
-            pairs = args.pop(0)
-        elif a == "--seed":
-            seed = args.pop(0)
-        elif a == "--skip":
-            skip.add(args.pop(0))
-        elif a == "--csv":
-            sweep_csv = args.pop(0)
-        elif a == "--radius":
-            name, r = args.pop(0).split("=")
-            radius[name] = r
-        else:
-            binary = a
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("binary", nargs="?", default=os.path.join(ROOT, "build", "cardemo"),
+                    help="the cardemo executable")
+    ap.add_argument("--pairs", default="1000000", help="compare-sweep pairs")
+    ap.add_argument("--seed", default="1", help="compare-sweep seed")
+    ap.add_argument("--skip", action="append", default=[], help="a bundled replay to leave out")
+    ap.add_argument("--csv", help="where compare-sweep writes its per-pair CSV")
+    ap.add_argument("--radius", action="append", default=[], metavar="REPLAY=R",
+                    help="compare's --radius for one replay")
+    args = ap.parse_args(argv)
+    binary, pairs, seed, sweep_csv = args.binary, args.pairs, args.seed, args.csv
+    skip = set(args.skip)
+    radius = dict(r.split("=", 1) for r in args.radius)
     print("## Bundled replays (`cardemo compare REPLAY --all-exact --json -`)\n")
     print("Cells: disagree / borderline against the exact oracle; hits: first contacts implied "
           "(differing from the oracle's).\n")

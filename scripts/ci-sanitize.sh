@@ -6,9 +6,9 @@
 # failure, sanitizer finding or fuzz crash. CARDEMO_SANITIZE_BUILD_DIR sets the build folder.
 #   scripts/ci-sanitize.sh [build|test]   build: configure and build only; test: build (a no-op
 #                                         when built) then the tests and the fuzzers; default both.
-# In `test`, the window tests (label platform, one at a time) run beside the fuzzers, which run at
-# the lowest priority (nice 19): the window tests mostly wait on wall-clock time, and the fuzzers
-# use the CPU they leave.
+# In `test`, the window tests (label platform, one at a time) run beside the rest of the suite and
+# then the fuzzers, which run at the lowest priority (nice 19): the window tests mostly wait on
+# wall-clock time, and the others use the CPU they leave.
 set -euo pipefail
 phase=${1:-all}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,15 +34,25 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # and assume the game keeps up, which a sanitized build on a loaded machine may not (a sanitizer
 # finding is deterministic and fails every try).
 export CARDEMO_TEST_SCALE=${CARDEMO_TEST_SCALE:-0.1}
-ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE platform ${CARDEMO_CTEST_ARGS:-}
-stage_step "ctest (all but platform)"
-CARDEMO_FUZZ_BUILD_DIR="$build" nice -n 19 "$root/scripts/fuzz.sh" "${CARDEMO_FUZZ_SECONDS:-60}" \
-  >"$build/fuzz.log" 2>&1 &
-fuzz=$!
+# The window tests mostly wait on wall-clock time, so the rest of the suite and then the fuzzers
+# run beside them at the lowest priority (nice 19): the window tests get the CPU when they want it.
+(
+  suite=0
+  nice -n 19 ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE platform \
+    ${CARDEMO_CTEST_ARGS:-} || suite=$?
+  fuzzed=0
+  CARDEMO_FUZZ_BUILD_DIR="$build" nice -n 19 "$root/scripts/fuzz.sh" "${CARDEMO_FUZZ_SECONDS:-60}" ||
+    fuzzed=$?
+  [ "$suite" -eq 0 ] || echo "sanitize: the suite failed" >&2
+  [ "$fuzzed" -eq 0 ] || echo "sanitize: a fuzz target failed" >&2
+  [ "$suite" -eq 0 ] && [ "$fuzzed" -eq 0 ]
+) >"$build/suite-and-fuzz.log" 2>&1 &
+rest=$!
 platform=0
 ctest --test-dir "$build" --output-on-failure -j1 -L platform --repeat until-pass:3 \
   ${CARDEMO_CTEST_ARGS:-} || platform=$?
-wait "$fuzz" && fuzzed=0 || fuzzed=$?
-cat "$build/fuzz.log"
-stage_step "ctest (platform) beside the fuzzers"
-[ "$platform" -eq 0 ] && [ "$fuzzed" -eq 0 ]
+stage_step "ctest (platform)"
+wait "$rest" && others=0 || others=$?
+cat "$build/suite-and-fuzz.log"
+stage_step "ctest (all but platform), then the fuzzers, beside it"
+[ "$platform" -eq 0 ] && [ "$others" -eq 0 ]

@@ -9,6 +9,7 @@ bin (pairs within 1 m of touching) per offset, and plots the percentage of pairs
 verdict disagrees with the oracle outside the contract's |sep| <= 1e-6 m band. Verdicts that
 differ inside the band (borderline) are allowed and not plotted; the script prints both.
 """
+import argparse
 import csv
 import os
 import subprocess
@@ -28,23 +29,15 @@ LINES = [
 
 
 def main(argv):
-    binary = os.path.join(ROOT, "build", "cardemo")
-    pairs, seed = "1000000", "1"
-    out = os.path.join(ROOT, "docs", "img", "box2d-offsets.png")
-    given_csv = None
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        if a == "--pairs":
-            pairs = args.pop(0)
-        elif a == "--seed":
-            seed = args.pop(0)
-        elif a == "--sweep-csv":
-            given_csv = args.pop(0)
-        elif a == "--out":
-            out = args.pop(0)
-        else:
-            binary = a
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("binary", nargs="?", default=os.path.join(ROOT, "build", "cardemo"),
+                    help="the cardemo executable")
+    ap.add_argument("--pairs", default="1000000", help="compare-sweep pairs")
+    ap.add_argument("--seed", default="1", help="compare-sweep seed")
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "img", "box2d-offsets.png"))
+    ap.add_argument("--sweep-csv", help="a saved `compare-sweep --all-exact --csv` to plot")
+    args = ap.parse_args(argv)
+    binary, pairs, seed, out, given_csv = args.binary, args.pairs, args.seed, args.out, args.sweep_csv
     plt = import_pyplot(__file__, argv)
 
     with tempfile.TemporaryDirectory() as tmp:

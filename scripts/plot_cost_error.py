@@ -13,6 +13,7 @@ Runs, from BUILD (default build/):
       the offset; pairs drawn in equal numbers per |gap| bin 1e-9..1e-6..1e-4..1e-2..0.1..1 m).
 Prints the numbers it plots, as a markdown table.
 """
+import argparse
 import csv
 import json
 import os
@@ -33,25 +34,16 @@ OFFSETS = ["0", "1000", "100000", "1e+07"]
 
 
 def main(argv):
-    build = os.path.join(ROOT, "build")
-    pairs, seed, reps = "1000000", "1", "5"
-    out = os.path.join(ROOT, "docs", "img", "cost-vs-error.png")
-    given_csv = None
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        if a == "--pairs":
-            pairs = args.pop(0)
-        elif a == "--seed":
-            seed = args.pop(0)
-        elif a == "--repetitions":
-            reps = args.pop(0)
-        elif a == "--sweep-csv":
-            given_csv = args.pop(0)
-        elif a == "--out":
-            out = args.pop(0)
-        else:
-            build = a
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("build", nargs="?", default=os.path.join(ROOT, "build"), help="build folder")
+    ap.add_argument("--pairs", default="1000000", help="compare-sweep pairs")
+    ap.add_argument("--seed", default="1", help="compare-sweep seed")
+    ap.add_argument("--repetitions", default="5", help="benchmark repetitions (the fastest counts)")
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "img", "cost-vs-error.png"))
+    ap.add_argument("--sweep-csv", help="a saved `compare-sweep --all-exact --csv` to plot")
+    args = ap.parse_args(argv)
+    build, pairs, seed, reps = args.build, args.pairs, args.seed, args.repetitions
+    out, given_csv = args.out, args.sweep_csv
     plt = import_pyplot(__file__, argv)
 
     with tempfile.TemporaryDirectory() as tmp:

@@ -17,6 +17,7 @@ Usage:
 The Pareto front is the set of points that no other point beats on both axes (cost and error,
 lower is better for both); it is drawn as a staircase. The product's default is ringed in red.
 """
+import argparse
 import csv
 import math
 import os
@@ -409,57 +410,40 @@ def run_study(executable, csv_path, quick):
         sys.exit(f"{executable} failed with exit status {r.returncode}")
 
 
-def usage_error(text):
-    print(f"plot_tradeoffs.py: {text} (see --help)", file=sys.stderr)
-    sys.exit(2)
-
-
 def main(argv):
-    args = list(argv)
-    if args[:1] in (["-h"], ["--help"]):
-        print(__doc__)
-        return
-    if args[:1] == ["--check"]:
-        if len(args) != 3 or args[1] not in SCHEMAS:
-            usage_error("--check STUDY CSV, STUDY one of " + ", ".join(STUDIES))
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 usage=argparse.SUPPRESS)
+    ap.add_argument("build", nargs="?", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--run", action="store_true")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--csv-dir")
+    ap.add_argument("--img-dir")
+    ap.add_argument("--ccd-default", default="continuous@120")
+    ap.add_argument("--check", nargs=2, metavar=("STUDY", "CSV"))
+    ap.add_argument("--smoke", nargs=3, metavar=("STUDY", "EXECUTABLE", "OUT_CSV"))
+    args = ap.parse_args(argv)
+    for mode in (args.check, args.smoke):
+        if mode and mode[0] not in SCHEMAS:
+            ap.error(f"STUDY must be one of {', '.join(STUDIES)}")
+    if args.check:
+        study, table = args.check
         try:
-            rows = check_table(args[1], args[2])
+            rows = check_table(study, table)
         except (CsvError, OSError) as e:
             print(e, file=sys.stderr)
             sys.exit(1)
-        print(f"{args[2]}: {len(rows)} rows, {args[1]} table OK")
+        print(f"{table}: {len(rows)} rows, {study} table OK")
         return
-    if args[:1] == ["--smoke"]:
-        if len(args) != 4 or args[1] not in SCHEMAS:
-            usage_error("--smoke STUDY EXECUTABLE OUT_CSV")
-        run_study(args[2], args[3], quick=True)
-        main(["--check", args[1], args[3]])
+    if args.smoke:
+        study, executable, out_csv = args.smoke
+        run_study(executable, out_csv, quick=True)
+        main(["--check", study, out_csv])
         return
 
-    build = os.path.join(ROOT, "build")
-    run, quick, csv_dir, img_dir, ccd_default = False, False, None, None, "continuous@120"
-    while args:
-        a = args.pop(0)
-        if a == "--run":
-            run = True
-        elif a == "--quick":
-            quick = True
-        elif a in ("--csv-dir", "--img-dir", "--ccd-default"):
-            if not args:
-                usage_error(f"{a} needs a value")
-            value = args.pop(0)
-            if a == "--csv-dir":
-                csv_dir = value
-            elif a == "--img-dir":
-                img_dir = value
-            else:
-                ccd_default = value
-        elif a.startswith("-"):
-            usage_error(f"unknown option {a}")
-        else:
-            build = a
+    build, run, quick = args.build, args.run, args.quick
+    csv_dir, img_dir, ccd_default = args.csv_dir, args.img_dir, args.ccd_default
     if quick and not run:
-        usage_error("--quick only makes sense with --run")
+        ap.error("--quick only makes sense with --run")
     scratch = os.path.join(build, "tradeoff-quick")
     csv_dir = csv_dir or (scratch if quick else os.path.join(ROOT, "docs", "perf"))
     img_dir = img_dir or (scratch if quick else os.path.join(ROOT, "docs", "img"))

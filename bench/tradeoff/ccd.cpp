@@ -1,4 +1,4 @@
-// Collision-detection error study (issue 5, item 2): discrete, sub-stepped and continuous detection
+// Collision-detection error study: discrete, sub-stepped and continuous detection
 // at speeds from 10 to 1000 m/s and several rates. For each setting, seeded random approaches of
 // the player to a 5 cm kerb or a parked car lying across its path (random heading, face angle and
 // phase of the target against the per-step grid of positions); per mode it counts the missed hits

@@ -297,7 +297,7 @@ TEST(Hud, HealthBarFillIsProportionalToHealth) {
 }
 
 TEST(Hud, HealthBarInTheFrameFollowsTheWorldsHealth) {
-  // A crash at 10 m/s into A takes health (contact at rest no longer does).
+  // A crash at 10 m/s into A takes health; contact at rest takes none.
   Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
   scene.player.speed = 10.0;
   World world(std::move(scene));
@@ -352,12 +352,18 @@ TEST(Hud, SpeedReadsStoppedOnceTheRunIsOver) {
   EXPECT_FALSE(canvas.hasText("18 km/h"));
 }
 
-TEST(Hud, GameOverPanelAtZeroHealth) {
+// One health point and 10 m/s towards a parked car 8 m ahead: run until the game is over.
+World crashedWorld() {
   Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
   scene.player.health = 1;
   scene.player.speed = 10.0;
   World world(std::move(scene));
   for (int i = 0; i < 240 && !world.gameOver(); ++i) world.step(InputFrame{});
+  return world;
+}
+
+TEST(Hud, GameOverPanelAtZeroHealth) {
+  World world = crashedWorld();
   ASSERT_TRUE(world.gameOver());
   Camera camera;
   camera.center = world.car().position;
@@ -386,11 +392,7 @@ TEST(Hud, HelpPanelListsEveryKey) {
 }
 
 TEST(Hud, GameOverPanelListsTheKeysItIsGiven) {
-  Scene scene = sceneWith({parkedCar("A", 8.0, 0, 90)});
-  scene.player.health = 1;
-  scene.player.speed = 10.0;
-  World world(std::move(scene));
-  for (int i = 0; i < 240 && !world.gameOver(); ++i) world.step(InputFrame{});
+  World world = crashedWorld();
   ASSERT_TRUE(world.gameOver());
   Camera camera;
   camera.center = world.car().position;

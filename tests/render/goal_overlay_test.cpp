@@ -92,16 +92,27 @@ TEST(GoalOverlay, ParkedPanelWithSummaryAndBest) {
   EXPECT_TRUE(overlay(world, c, view).hasText("new best"));
 }
 
-TEST(GoalOverlay, TimeUpPanel) {
-  Scene scene = bayScene(50.0);
-  scene.goal->time_limit = 0.25;
-  World world(scene);
-  ParkingChallenge c(*scene.goal, 120.0, 100);
-  c.observe(world);
+// Steps `world` with no input until the challenge `c` is over.
+void runUntilOver(World& world, ParkingChallenge& c) {
   while (!c.over()) {
     world.step(InputFrame{});
     c.observe(world);
   }
+}
+
+// A bay 50 m away and a quarter of a second to reach it: the run ends TIME UP.
+Scene timeUpScene() {
+  Scene scene = bayScene(50.0);
+  scene.goal->time_limit = 0.25;
+  return scene;
+}
+
+TEST(GoalOverlay, TimeUpPanel) {
+  const Scene scene = timeUpScene();
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  runUntilOver(world, c);
   ASSERT_TRUE(c.timedOut());
   const RecordingCanvas canvas = overlay(world, c);
   EXPECT_TRUE(canvas.hasText("TIME UP"));
@@ -121,10 +132,7 @@ TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
     c.observe(world);
   }
   EXPECT_EQ(timerDetail(c), "par 12.0 s   left 59.8 s   hold 0.2 / 0.5 s");
-  while (!c.over()) {
-    world.step(InputFrame{});
-    c.observe(world);
-  }
+  runUntilOver(world, c);
   EXPECT_EQ(timerDetail(c), "parked   par 12.0 s");
   GoalView view;
   view.keys = "Enter retry    N next level    Esc levels";
@@ -141,15 +149,11 @@ TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
 }
 
 TEST(GoalOverlay, TimerDetailSaysTimeUp) {
-  Scene scene = bayScene(50.0);
-  scene.goal->time_limit = 0.25;
+  const Scene scene = timeUpScene();
   World world(scene);
   ParkingChallenge c(*scene.goal, 120.0, 100);
   c.observe(world);
-  while (!c.over()) {
-    world.step(InputFrame{});
-    c.observe(world);
-  }
+  runUntilOver(world, c);
   EXPECT_EQ(timerDetail(c), "time up");
 }
 

@@ -5,15 +5,17 @@
 #include <limits>
 #include <vector>
 
+#include "compare/exact/dyadic.hpp"
 #include "compare/exact/exact_numbers.hpp"
 #include "compare/exact/exact_sat.hpp"
 
 namespace cardemo::exact {
 namespace {
 
-// 256 bits leave the rounded-to-double separation far below a nanometre of error.
+// Exact dyadic coordinates; 256-bit floats leave the rounded-to-double separation far below a
+// nanometre of error.
 struct Point {
-  mpq_class x, y;
+  Dyadic x, y;
 };
 
 // A shape as exact vertices plus its unnormalised edge normals (the candidate axes).
@@ -23,10 +25,10 @@ struct Shape {
 };
 
 Point exactPoint(const Eigen::Vector2d& p) {
-  return {mpq_class(p.x()), mpq_class(p.y())};
+  return {Dyadic(p.x()), Dyadic(p.y())};
 }
 
-mpq_class dot(const Point& a, const Point& b) {
+Dyadic dot(const Point& a, const Point& b) {
   return a.x * b.x + a.y * b.y;
 }
 
@@ -35,10 +37,13 @@ Shape boxShape(const Obb2& box) {
   const Point c = exactPoint(box.center);
   const Point u = exactPoint(box.axis);
   const Point v{-u.y, u.x};
-  const mpq_class hx(box.half.x()), hy(box.half.y());
+  const Dyadic hx(box.half.x()), hy(box.half.y());
+  const Point ex{hx * u.x, hx * u.y}, ey{hy * v.x, hy * v.y};
+  const auto withSign = [](int sign, const Dyadic& d) { return sign > 0 ? d : -d; };
   Shape s;
   for (const auto& [sx, sy] : {std::pair{1, -1}, {1, 1}, {-1, 1}, {-1, -1}}) {
-    s.points.push_back({c.x + sx * hx * u.x + sy * hy * v.x, c.y + sx * hx * u.y + sy * hy * v.y});
+    s.points.push_back({c.x + withSign(sx, ex.x) + withSign(sy, ey.x),
+                        c.y + withSign(sx, ex.y) + withSign(sy, ey.y)});
   }
   s.axes = {u, v};
   return s;
@@ -55,10 +60,10 @@ Shape polygonShape(const ConvexPolygon& polygon) {
   return s;
 }
 
-void project(const Shape& s, const Point& axis, mpq_class& lo, mpq_class& hi) {
+void project(const Shape& s, const Point& axis, Dyadic& lo, Dyadic& hi) {
   lo = hi = dot(s.points.front(), axis);
   for (std::size_t i = 1; i < s.points.size(); ++i) {
-    const mpq_class d = dot(s.points[i], axis);
+    const Dyadic d = dot(s.points[i], axis);
     if (d < lo) lo = d;
     if (d > hi) hi = d;
   }
@@ -68,26 +73,26 @@ ExactResult collideShapes(const Shape& a, const Shape& b) {
   bool separated = false;
   bool have_best = false;
   mpf_class best(0, kFloatBits);
-  mpq_class alo, ahi, blo, bhi;
+  Dyadic alo, ahi, blo, bhi;
   for (const Shape* owner : {&a, &b}) {
     for (const Point& axis : owner->axes) {
       project(a, axis, alo, ahi);
       project(b, axis, blo, bhi);
-      const mpq_class forward = blo - ahi;
-      const mpq_class backward = alo - bhi;
-      const mpq_class& gap = forward > backward ? forward : backward;
-      if (gap > 0) separated = true;
-      const mpq_class len2 = dot(axis, axis);
-      if (len2 == 0) continue;  // a degenerate axis separates nothing
-      mpf_class g(gap, kFloatBits);
-      g /= sqrt(mpf_class(len2, kFloatBits));
+      const Dyadic forward = blo - ahi;
+      const Dyadic backward = alo - bhi;
+      const Dyadic& gap = forward > backward ? forward : backward;
+      if (gap.sign() > 0) separated = true;
+      const Dyadic len2 = dot(axis, axis);
+      if (len2.sign() == 0) continue;  // a degenerate axis separates nothing
+      mpf_class g = gap.toFloat(kFloatBits);
+      g /= sqrt(len2.toFloat(kFloatBits));
       if (!have_best || g > best) {
         best = g;
         have_best = true;
       }
     }
   }
-  // Rational SAT decides the hit exactly; the separation is only for reporting.
+  // Exact SAT decides the hit; the separation is only for reporting.
   return {!separated, have_best ? nearestDouble(best) : 0.0};
 }
 

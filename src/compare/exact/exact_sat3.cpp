@@ -4,29 +4,31 @@
 
 #include <array>
 
+#include "compare/exact/dyadic.hpp"
 #include "compare/exact/exact_numbers.hpp"
 #include "compare/exact/exact_sat.hpp"
 
 namespace cardemo::exact {
 namespace {
 
-using QVec = std::array<mpq_class, 3>;
+using QVec = std::array<Dyadic, 3>;
 
-// 256 bits: the only inexact steps are the square root and division by the axis length.
+// Exact dyadic arithmetic; the only inexact steps are the square root and division by the axis
+// length.
 QVec toQ(const Eigen::Vector3d& v) {
-  return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())};
+  return {Dyadic(v.x()), Dyadic(v.y()), Dyadic(v.z())};
 }
 
 QVec cross(const QVec& u, const QVec& v) {
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
 }
 
-mpq_class dot(const QVec& u, const QVec& v) {
+Dyadic dot(const QVec& u, const QVec& v) {
   return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
 bool isZero(const QVec& v) {
-  return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0;
+  return v[0].sign() == 0 && v[1].sign() == 0 && v[2].sign() == 0;
 }
 
 // One box taken exactly: { center + M p : |p_i| <= half_i }, M's columns as stored (not assumed
@@ -34,21 +36,21 @@ bool isZero(const QVec& v) {
 struct QBox {
   QVec center;
   std::array<QVec, 3> edge;
-  std::array<mpq_class, 3> half;
+  std::array<Dyadic, 3> half;
 };
 
 QBox toQ(const Obb3& box) {
   QBox q{toQ(box.center), {}, {}};
   for (int k = 0; k < 3; ++k) {
     q.edge[k] = toQ(box.rotation().col(k));
-    q.half[k] = mpq_class(box.half[k]);
+    q.half[k] = Dyadic(box.half[k]);
   }
   return q;
 }
 
 // Support radius of a parallelepiped along n: sum_i half_i |n . edge_i|.
-mpq_class radius(const QBox& box, const QVec& n) {
-  mpq_class r = 0;
+Dyadic radius(const QBox& box, const QVec& n) {
+  Dyadic r;
   for (int k = 0; k < 3; ++k) r += box.half[k] * abs(dot(n, box.edge[k]));
   return r;
 }
@@ -80,11 +82,10 @@ ExactResult collideObb3(const Obb3& a, const Obb3& b) {
     // A zero cross product comes from exactly parallel edges, which add no face to the Minkowski
     // difference that the face normals do not already cover.
     if (isZero(n)) continue;
-    const mpq_class gap = abs(dot(n, d)) - radius(qa, n) - radius(qb, n);
-    if (sgn(gap) > 0) hit = false;
-    mpf_class len(dot(n, n), kFloatBits);
-    len = sqrt(len);
-    const mpf_class sep = mpf_class(gap, kFloatBits) / len;
+    const Dyadic gap = abs(dot(n, d)) - radius(qa, n) - radius(qb, n);
+    if (gap.sign() > 0) hit = false;
+    const mpf_class len = sqrt(dot(n, n).toFloat(kFloatBits));
+    const mpf_class sep = gap.toFloat(kFloatBits) / len;
     if (!any || sep > best) best = sep;
     any = true;
   }
