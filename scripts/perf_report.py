@@ -137,14 +137,15 @@ def size_value(label):
 
 
 def narrow_tables(r, csv_rows):
-    targets = {"manifoldObb2": 10.0}
+    targets = {("manifoldObb2", "1k"): 10.0, ("manifoldObb2", "1M"): 20.0,
+               ("overlapObb3", "1k"): 25.0, ("collideObb3", "1k"): 40.0}
     rows = []
     for query in ("overlapObb2", "collideObb2", "manifoldObb2", "collidePolygons", "overlapObb3",
                   "collideObb3"):
         for size in sizes_in(r, f"narrow/{query}/"):
             ours = r.ns_per_item(f"narrow/{query}/{size}/cardemo")
             theirs = r.ns_per_item(f"narrow/{query}/{size}/box2d")
-            t = targets.get(query)
+            t = targets.get((query, size))
             box2d_name = {"overlapObb2": "b2TestOverlap", "manifoldObb2": "b2CollidePolygons",
                           "collidePolygons": "b2CollidePolygons"}.get(query, "")
             rows.append([f"`{query}`", size, fmt(ours, " ns"),
@@ -301,6 +302,63 @@ def load_tables(r, csv_rows):
             table(["what", "measured", "target", "status"], rows))
 
 
+def targets_table(r):
+    """Every speed target of the suite in one table, the measured value and Box2D's from this run."""
+    rows = []
+
+    def add(what, target_text, ours, ours_text, theirs_text, status):
+        rows.append([what, target_text, ours_text if ours is not None else "n/a", theirs_text,
+                     status])
+
+    for query, size, t, b2 in (("overlapObb3", "1k", 25.0, None), ("collideObb3", "1k", 40.0, None),
+                               ("manifoldObb2", "1k", 10.0, "b2CollidePolygons"),
+                               ("manifoldObb2", "1M", 20.0, "b2CollidePolygons")):
+        ours = r.ns_per_item(f"narrow/{query}/{size}/cardemo")
+        theirs = r.ns_per_item(f"narrow/{query}/{size}/box2d")
+        add(f"`{query}`, {size} pairs, one at a time", f"<= {t:g} ns", ours, fmt(ours, " ns"),
+            f"{fmt(theirs, ' ns')} ({b2})" if b2 else "no equivalent", verdict(ours, t))
+    for size in ("1k", "1M"):
+        ours = r.ns_per_item(f"narrow/collidePolygons/{size}/cardemo")
+        theirs = r.ns_per_item(f"narrow/collidePolygons/{size}/box2d")
+        x = ratio(theirs, ours)
+        add(f"`collidePolygons`, {size} pairs", ">= 2x Box2D", ours,
+            f"{fmt(ours, ' ns')} ({fmt(x, 'x')})", f"{fmt(theirs, ' ns')} (b2CollidePolygons)",
+            verdict(x, 2.0, smaller_is_better=False))
+    for query, t in (("overlapObb2", 0.5), ("collideObb2", 1.0), ("overlapObb3", 5.0),
+                     ("separationObb3", 5.0)):
+        paths = [r.ns_per_item(f"batch/{query}/64k/{p}") for p in ("avx512", "avx2", "portable")]
+        best = next((x for x in paths if x is not None), None)
+        theirs = r.ns_per_item(f"batch/{query}/64k/box2d")
+        add(f"`{query}Batch`, 64k boxes, widest path", f"<= {t:g} ns", best, fmt(best, " ns"),
+            fmt(theirs, " ns") if theirs else "no equivalent", verdict(best, t))
+    for layout in ("lot", "random"):
+        ours = r.ns_per_item(f"broad/query/{layout}/1M/cardemo")
+        theirs = r.ns_per_item(f"broad/query/{layout}/1M/box2d")
+        add(f"broad query, {layout}, 1M cars", "<= 20 ns", ours, fmt(ours, " ns"),
+            f"{fmt(theirs, ' ns')} (b2DynamicTree)", verdict(ours, 20.0))
+    mem = r.counter("broad/query/lot/1M/cardemo", "bytes_per_car")
+    memb = r.counter("broad/query/lot/1M/box2d", "bytes_per_car")
+    add("broad phase memory, 1M cars", "<= 64 B/car", mem, fmt(mem, " B"), f">= {fmt(memb, ' B')}",
+        verdict(mem, 64.0))
+    steps = [(size_value(z), z) for z in sizes_in(r, "step/lot/")]
+    if steps:
+        size = max(steps)[1]
+        ours = r.ns_per_item(f"step/lot/{size}/cardemo")
+        theirs = r.ns_per_item(f"step/lot/{size}/box2d")
+        add(f"World::step, {size} parked cars", "<= 200 ns", ours, fmt(ours, " ns"),
+            f"{fmt(theirs, ' ns')} (b2World::Step, one body)", verdict(ours, 200.0))
+    load = r.ns_per_item("load/scene+world/100k/cardemo")
+    load = None if load is None else load / 1e6
+    add("load and build, 100k cars", "<= 1000 ms", load, fmt(load, " ms"), "", verdict(load, 1000.0))
+    b = r.get("replay/demo/cardemo")
+    fps = None if b is None else b.get("items_per_second")
+    add("headless replay, demo.replay", ">= 5,000,000 frames/s", fps, fmt(fps, " frames/s"), "",
+        verdict(fps, 5e6, smaller_is_better=False))
+    return ("Every speed target in one table, each measured value and Box2D's figure from this "
+            "same run (the sections below give the set-up of each row).\n\n" +
+            table(["what", "target", "cardemo", "Box2D 2.4.1", "status"], rows))
+
+
 def machine_text(r):
     ctx = r.context
     caches = ", ".join(f"L{c['level']} {c['type'][0].lower()} {c['size'] // 1024} KiB"
@@ -376,7 +434,10 @@ def write_tables(r):
         w = csv.writer(f)
         w.writerow(["group", "what", "size", "unit", "cardemo", "box2d", "ratio", "target"])
         w.writerows(csv_rows)
-    region = [BEGIN, "", "### Machine of this run", "", machine, ""]
+    targets = targets_table(r)
+    (PERF / "targets.md").write_text("# Speed targets\n\n" + targets + "\n")
+    region = [BEGIN, "", "### Machine of this run", "", machine, "", "### Speed targets", "",
+              targets, ""]
     for _, title, body in sections:
         region += [f"### {title}", "", body, ""]
     region.append(END)
