@@ -17,6 +17,17 @@
 namespace cardemo::grid_detail {
 namespace {
 
+// The lanes set in a 4-bit mask m of found lanes, in order.
+struct FoundLanes {
+  unsigned lane[4]{};
+  unsigned count = 0;
+  constexpr explicit FoundLanes(unsigned m) {
+    for (unsigned l = 0; l < 4; ++l) {
+      if (((m >> l) & 1u) != 0) lane[count++] = l;
+    }
+  }
+};
+
 // For a mask m of found lanes: the byte shuffle that moves their 32-bit ids to the front, and how
 // many there are.
 struct Compress {
@@ -24,15 +35,13 @@ struct Compress {
   std::uint8_t count[16];
   constexpr Compress() : shuffle{}, count{} {
     for (unsigned m = 0; m < 16; ++m) {
-      unsigned n = 0;
-      for (unsigned lane = 0; lane < 4; ++lane) {
-        if (((m >> lane) & 1u) == 0) continue;
+      const FoundLanes found(m);
+      for (unsigned n = 0; n < found.count; ++n) {
         for (unsigned byte = 0; byte < 4; ++byte) {
-          shuffle[m][4 * n + byte] = static_cast<std::uint8_t>(4 * lane + byte);
+          shuffle[m][4 * n + byte] = static_cast<std::uint8_t>(4 * found.lane[n] + byte);
         }
-        ++n;
       }
-      count[m] = static_cast<std::uint8_t>(n);
+      count[m] = static_cast<std::uint8_t>(found.count);
     }
   }
 };
@@ -51,15 +60,13 @@ struct FewTables {
   std::uint16_t advance[16];
   constexpr FewTables() : slot{}, advance{} {
     for (unsigned m = 0; m < 16; ++m) {
-      unsigned n = 0;
-      for (unsigned lane = 0; lane < 4; ++lane) {
-        if (((m >> lane) & 1u) == 0) continue;
+      const FoundLanes found(m);
+      for (unsigned n = 0; n < found.count; ++n) {
         for (unsigned c = 0; c + n < kFewIds; ++c) {
-          slot[c][m][c + n] = static_cast<std::uint8_t>(0x80 | lane);
+          slot[c][m][c + n] = static_cast<std::uint8_t>(0x80 | found.lane[n]);
         }
-        ++n;
       }
-      advance[m] = static_cast<std::uint16_t>(n * sizeof slot[0]);
+      advance[m] = static_cast<std::uint16_t>(found.count * sizeof slot[0]);
     }
   }
 };
