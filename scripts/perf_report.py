@@ -359,6 +359,17 @@ def targets_table(r):
             table(["what", "target", "cardemo", "Box2D 2.4.1", "status"], rows))
 
 
+def box2d_package():
+    """The installed Debian package of Box2D, beside the version the library reports of itself."""
+    try:
+        version = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "libbox2d-dev"],
+                                 capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+    # Box2D 2.4.1's own b2_version still reads 2.4.0 (b2_settings.cpp), so name the package too.
+    return f" (package libbox2d-dev {version})" if version else ""
+
+
 def machine_text(r):
     ctx = r.context
     caches = ", ".join(f"L{c['level']} {c['type'][0].lower()} {c['size'] // 1024} KiB"
@@ -379,7 +390,8 @@ def machine_text(r):
         f"- Build (from the benchmark's context): {ctx.get('compiler', '?')}, "
         f"{ctx.get('build_type', '?')}, `{ctx.get('cxx_flags', '?')}`; the AVX2 batch files "
         f"alone add `-mavx2 -mfma`, the AVX-512 one `-mavx512f`",
-        f"- Batch path used by default: {ctx.get('batch_path', '?')}; Box2D: {ctx.get('box2d', '?')}",
+        f"- Batch path used by default: {ctx.get('batch_path', '?')}; Box2D: b2_version "
+        f"{ctx.get('box2d', '?')}{box2d_package()}",
         f"- Google Benchmark run at {ctx.get('date', '?')} on {ctx.get('host_name', '?')}",
     ])
 

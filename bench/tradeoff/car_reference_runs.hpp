@@ -4,6 +4,7 @@
 // orders; these are what a player does.
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,16 +38,19 @@ inline SpeedAndDistance throttleLaw(const ReferenceRun& r, double t) {
 }
 
 inline SpeedAndDistance coastLaw(const ReferenceRun& r, double t) {
-  return coasting(r.start.speed, r.params.rolling_resistance, r.params.drag, t);
+  // With no pedal held, engine braking is one more constant deceleration beside rolling resistance.
+  const CarParams& p = r.params;
+  return coasting(r.start.speed, p.rolling_resistance + p.engine_brake, p.drag, t);
 }
 
 inline SpeedAndDistance cruiseLaw(const ReferenceRun& r, double t) {
   return {r.start.speed, r.start.speed * t};
 }
 
-/// The four runs: full throttle from rest; coasting from 30 m/s; a 15 m/s circle at the lock for
-/// that speed (drag and rolling resistance off so the speed holds); full throttle from 5 m/s with
-/// the wheel held at 0.1 rad (the lock's narrowing off so the curvature holds).
+/// The four runs: full throttle from rest; coasting from 30 m/s (rolling resistance, engine braking
+/// and drag); a 15 m/s circle at the lock for that speed, which the grip limit sets (drag, rolling
+/// resistance and engine braking off so the speed holds); full throttle from 5 m/s with the wheel
+/// held at 0.1 rad (the lock's narrowing and the grip limit off so the curvature holds).
 inline std::vector<ReferenceRun> referenceRuns() {
   std::vector<ReferenceRun> runs;
   const double heading = 0.3;  // off-axis, so both coordinates carry error
@@ -64,13 +68,15 @@ inline std::vector<ReferenceRun> referenceRuns() {
   ReferenceRun circle{"circle", {}, start, {false, false, true, false}, 0.0, cruiseLaw};
   circle.params.drag = 0.0;
   circle.params.rolling_resistance = 0.0;
+  circle.params.engine_brake = 0.0;
   circle.start.speed = 15.0;
-  circle.start.steer = steeringLock(circle.params, circle.start.speed);
+  circle.start.steer = effectiveLock(circle.params, circle.start.speed, false);
   circle.curvature = std::tan(circle.start.steer) / circle.params.wheelbase;
   runs.push_back(circle);
 
   ReferenceRun turn{"accelerating_turn", {}, start, {true, false, true, false}, 0.0, throttleLaw};
   turn.params.lock_speed = 0.0;
+  turn.params.grip = std::numeric_limits<double>::infinity();
   turn.params.max_steer = 0.1;
   turn.start.speed = 5.0;
   turn.start.steer = turn.params.max_steer;
