@@ -9,7 +9,8 @@
 #      built beside stage 1's tests, as is the sanitizer tree of stage 3;
 #   3. Clang ASan+UBSan, with the fuzz targets in the same tree: the window tests, and beside them
 #      at low priority every other CTest test, then every fuzz target for CARDEMO_FUZZ_SECONDS
-#      (default 20 here; scripts/fuzz.sh alone runs 60 s or more) (scripts/ci-sanitize.sh).
+#      (default 10 here: each target replays its corpus and mutates beyond it; scripts/fuzz.sh
+#      alone runs 60 s or more) (scripts/ci-sanitize.sh).
 # Each stage prints its wall time and the CPU time (user+sys) of everything it ran (stage 1's
 # includes the builds that ran beside its tests; those print their own).
 #
@@ -74,7 +75,7 @@ stage_end
 [ "$built" -eq 0 ] || { echo "the determinism check or the sanitizer build failed" >&2; exit 1; }
 
 stage_begin "Clang ASan+UBSan: every CTest test, then every fuzz target"
-CARDEMO_SANITIZE_BUILD_DIR="$sanitize" CARDEMO_FUZZ_SECONDS="${CARDEMO_FUZZ_SECONDS:-20}" \
+CARDEMO_SANITIZE_BUILD_DIR="$sanitize" CARDEMO_FUZZ_SECONDS="${CARDEMO_FUZZ_SECONDS:-10}" \
   "$root/scripts/ci-sanitize.sh" test
 stage_end
 printf '\n== done: %d s wall\n' "$SECONDS"
