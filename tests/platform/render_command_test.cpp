@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "../support/cli_run.hpp"
 #include "io/scene_json.hpp"
@@ -59,6 +60,31 @@ std::string str(const Rgba& c) {
   return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + ")";
 }
 
+// A parked car of the bundled lot and the pixel of the default 1280x720 render at its centre.
+struct ParkedPixel {
+  std::string id;
+  Rgba color;
+};
+
+// The centre pixel of every parked car of the bundled lot that lies clear of the HUD panels, with
+// the camera `cardemo render` uses by default (following the player at 12 m).
+std::vector<ParkedPixel> parkedCarPixels(const SDL_Surface& img) {
+  const Parsed<Scene> scene = loadScene(kLot);
+  EXPECT_TRUE(scene.ok());
+  std::vector<ParkedPixel> pixels;
+  if (!scene.ok()) return pixels;
+  const Obb2 player =
+      Obb2::fromDegrees(scene.value().player.position, scene.value().player.heading_deg,
+                        scene.value().player.length, scene.value().player.width);
+  const Camera camera = followCamera(player, 12.0, {1280, 720});
+  for (const ParkedCar& car : scene.value().parked) {
+    const Eigen::Vector2f s = camera.toScreen(car.box.center);
+    if (s.x() < 320 || s.x() > 1100 || s.y() < 160 || s.y() > 640) continue;
+    pixels.push_back({car.id, pixel(img, static_cast<int>(s.x()), static_cast<int>(s.y()))});
+  }
+  return pixels;
+}
+
 bool samePixels(const SDL_Surface& a, const SDL_Surface& b) {
   if (a.w != b.w || a.h != b.h) return false;
   for (int y = 0; y < a.h; ++y) {
@@ -83,21 +109,9 @@ TEST(RenderCommand, SceneFrameZeroHasThePlayerAtTheCentreAndParkedCarsInTheirCol
   EXPECT_TRUE(near(pixel(*img, 640, 360), palette.player)) << str(pixel(*img, 640, 360));
 
   // Every parked car whose centre is clear of the HUD panels shows the parked colour there.
-  const Parsed<Scene> scene = loadScene(kLot);
-  ASSERT_TRUE(scene.ok());
-  const Obb2 player =
-      Obb2::fromDegrees(scene.value().player.position, scene.value().player.heading_deg,
-                        scene.value().player.length, scene.value().player.width);
-  const Camera camera = followCamera(player, 12.0, {1280, 720});
-  int checked = 0;
-  for (const ParkedCar& car : scene.value().parked) {
-    const Eigen::Vector2f s = camera.toScreen(car.box.center);
-    if (s.x() < 320 || s.x() > 1100 || s.y() < 160 || s.y() > 640) continue;
-    const Rgba c = pixel(*img, static_cast<int>(s.x()), static_cast<int>(s.y()));
-    EXPECT_TRUE(near(c, parkedColor(car.id))) << car.id << " " << str(c);
-    ++checked;
-  }
-  EXPECT_GE(checked, 5);
+  const std::vector<ParkedPixel> parked = parkedCarPixels(*img);
+  for (const auto& [id, c] : parked) EXPECT_TRUE(near(c, parkedColor(id))) << id << " " << str(c);
+  EXPECT_GE(parked.size(), 5u);
   EXPECT_FALSE(fs::exists(out.string() + ".tmp"));
 }
 
@@ -208,25 +222,15 @@ TEST(RenderCommand, SpritesChangeTheImageAndTintTheParkedCars) {
   EXPECT_FALSE(samePixels(*a, *b));
   // The light-grey body sprite, tinted: a parked car's middle is darker than its paint but of the
   // same hue (its largest channel stays the largest).
-  const Parsed<Scene> scene = loadScene(kLot);
-  ASSERT_TRUE(scene.ok());
-  const Obb2 player =
-      Obb2::fromDegrees(scene.value().player.position, scene.value().player.heading_deg,
-                        scene.value().player.length, scene.value().player.width);
-  const Camera camera = followCamera(player, 12.0, {1280, 720});
-  int checked = 0;
-  for (const ParkedCar& car : scene.value().parked) {
-    const Eigen::Vector2f s = camera.toScreen(car.box.center);
-    if (s.x() < 320 || s.x() > 1100 || s.y() < 160 || s.y() > 640) continue;
-    const Rgba c = pixel(*b, static_cast<int>(s.x()), static_cast<int>(s.y()));
-    const Rgba paint = parkedColor(car.id);
-    EXPECT_LE(c.r, paint.r + 3) << car.id << " " << str(c);
-    EXPECT_LE(c.g, paint.g + 3) << car.id << " " << str(c);
-    EXPECT_LE(c.b, paint.b + 3) << car.id << " " << str(c);
-    EXPECT_GE(c.r + c.g + c.b, (paint.r + paint.g + paint.b) * 7 / 10) << car.id << " " << str(c);
-    ++checked;
+  const std::vector<ParkedPixel> parked = parkedCarPixels(*b);
+  for (const auto& [id, c] : parked) {
+    const Rgba paint = parkedColor(id);
+    EXPECT_LE(c.r, paint.r + 3) << id << " " << str(c);
+    EXPECT_LE(c.g, paint.g + 3) << id << " " << str(c);
+    EXPECT_LE(c.b, paint.b + 3) << id << " " << str(c);
+    EXPECT_GE(c.r + c.g + c.b, (paint.r + paint.g + paint.b) * 7 / 10) << id << " " << str(c);
   }
-  EXPECT_GE(checked, 5);
+  EXPECT_GE(parked.size(), 5u);
 }
 
 TEST(RenderCommand, MissingSpritesAreExit2WithTheReason) {
