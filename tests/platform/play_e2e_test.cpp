@@ -23,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "../support/cli_run.hpp"
 #include "io/replay_text.hpp"
 
 namespace {
@@ -604,15 +605,10 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
 }
 
 TEST(PlayNoDisplay, SaysSoAndExitsOne) {
-  const std::string command =
-      "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(CARDEMO_BINARY) + " play 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string text;
-  char buf[256];
-  while (std::fgets(buf, sizeof buf, pipe) != nullptr) text += buf;
-  const int raw = pclose(pipe);
-  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 1);
+  const cardemo::test::CliResult run =
+      cardemo::test::runCardemo("play", "", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(run.status, 1);
+  const std::string text = run.out + run.err;
   EXPECT_NE(text.find("cardemo render"), std::string::npos) << text;
   EXPECT_NE(text.find("cardemo replay"), std::string::npos) << text;
 }

@@ -237,16 +237,12 @@ TEST(RenderCommand, MissingSpritesAreExit2WithTheReason) {
   const fs::path out = scratch("none.png");
   const CommandResult run = render("'" + kLot + "' --sprites --out '" + out.string() + "'");
   ASSERT_EQ(run.status, 0) << run.err;
-  const fs::path err = scratch("err.txt");
-  const std::string cmd =
-      "env -u DISPLAY CARDEMO_SPRITES=/no/such/dir '" + std::string(CARDEMO_BINARY) + "' render '" +
-      kLot + "' --sprites --out '" + out.string() + "' >/dev/null 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 2);
-  std::ifstream f(err);
-  const std::string text{std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-  EXPECT_NE(text.find("CARDEMO_SPRITES=/no/such/dir"), std::string::npos) << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  const CommandResult missing =
+      test::runCardemo("render '" + kLot + "' --sprites --out '" + out.string() + "'", "",
+                       "env -u DISPLAY CARDEMO_SPRITES=/no/such/dir");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("CARDEMO_SPRITES=/no/such/dir"), std::string::npos) << missing.err;
+  EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
 }
 
 TEST(RenderCommand, RigKeepsThePictureInsideTheWalls) {
