@@ -18,7 +18,7 @@ enum class CarIntegrator {
 /// How the player's motion within a step is checked against the static colliders.
 enum class CollisionDetection {
   kDiscrete,    ///< One test at the end pose of each step: fast motion can pass through things.
-  kSubstepped,  ///< Sub-poses at most half the car's smaller extent apart (the former scheme).
+  kSubstepped,  ///< Sub-poses at most half the car's smaller extent apart.
   kContinuous,  ///< Swept SAT to the first time of impact when the step moves fast (default).
 };
 
