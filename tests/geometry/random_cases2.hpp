@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/random_draws.hpp"
 #include "../support/test_scale.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
@@ -29,13 +30,11 @@ class Random {
   /// Seeded generator; every test uses its own fixed seed.
   explicit Random(std::uint64_t seed) : rng_(seed) {}
   /// Uniform in [lo, hi).
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng_);
-  }
+  double uniform(double lo, double hi) { return cardemo::testing::uniform(rng_, lo, hi); }
   /// Log-uniform in [lo, hi).
-  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
+  double logUniform(double lo, double hi) { return cardemo::testing::logUniform(rng_, lo, hi); }
   /// Uniform integer in [lo, hi].
-  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  int integer(int lo, int hi) { return uniformInt(rng_, lo, hi); }
   /// +1 or -1.
   double sign() { return integer(0, 1) == 0 ? -1.0 : 1.0; }
   /// Uniform unit vector.
