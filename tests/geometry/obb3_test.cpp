@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -14,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/random_class.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "random_cases3.hpp"
 
@@ -21,10 +21,11 @@ namespace cardemo {
 namespace {
 
 using test3::Pair3;
-
-constexpr double kHitTolerance = 1e-6;  // CONTRACT: hit must be right when |sep| > 1e-6 m
-constexpr double kSepTolerance = 2e-6;  // CONTRACT: sep within 2e-6 m
-constexpr int kCasesPerClass = 100000;
+using testing::ClassStats;
+using testing::Failures;
+using testing::kCasesPerClass;
+using testing::kHitTolerance;
+using testing::kSepTolerance;
 
 std::string describe(const Obb3& a, const Obb3& b) {
   std::ostringstream s;
@@ -36,69 +37,49 @@ std::string describe(const Obb3& a, const Obb3& b) {
   return s.str();
 }
 
-// Tallies over one class; reports the first few failures in full.
-struct Tally {
-  int cases = 0;
-  int failures = 0;
-  int hits = 0;
-  int crossWins = 0;  // cases whose reported axis is an edge-edge axis
-  double worstSepError = 0.0;
-  double worstAsymmetry = 0.0;
-
-  void fail(const std::string& what, const Obb3& a, const Obb3& b) {
-    if (++failures <= 5) ADD_FAILURE() << what << "\n" << describe(a, b);
-  }
-};
-
 // Checks one pair in both orders against the oracle (computed once: the oracle is symmetric, which
 // exact_sat3_test checks). `strictHit`: the oracle's hit must be matched even inside 1e-6 m.
-void checkPair(const Pair3& p, Tally& t, bool strictHit = false,
+void checkPair(const Pair3& p, int index, Failures& f, ClassStats& s, bool strictHit = false,
                const exact::ExactResult* known = nullptr) {
   const exact::ExactResult ex = known != nullptr ? *known : exact::collideObb3(p.a, p.b);
   const SatResult3 ab = collideObb3(p.a, p.b);
   const SatResult3 ba = collideObb3(p.b, p.a);
-  ++t.cases;
-  t.hits += ex.hit ? 1 : 0;
-  t.crossWins += ab.axis_index >= 6 ? 1 : 0;
+  s.tally(ex.hit, ex.separation);
+  s.countAxis(ab.axis_index >= 6);
   const bool checkHit = strictHit || std::abs(ex.separation) > kHitTolerance;
   for (const auto& [r, x, y] : {std::tuple{ab, &p.a, &p.b}, std::tuple{ba, &p.b, &p.a}}) {
+    const auto fail = [&, x = x, y = y](const std::string& what) {
+      f.fail(index, what + "\n" + describe(*x, *y));
+    };
     const double err = std::abs(r.separation - ex.separation);
-    t.worstSepError = std::max(t.worstSepError, err);
-    std::ostringstream s;
-    s.precision(17);
-    s << "exact hit=" << ex.hit << " sep=" << ex.separation << "; got hit=" << r.hit
+    s.max_error = std::max(s.max_error, err);
+    std::ostringstream m;
+    m.precision(17);
+    m << "exact hit=" << ex.hit << " sep=" << ex.separation << "; got hit=" << r.hit
       << " sep=" << r.separation << " axis=" << r.axis_index;
-    if (!(err <= kSepTolerance)) t.fail("separation off: " + s.str(), *x, *y);
-    if (checkHit && r.hit != ex.hit) t.fail("hit wrong: " + s.str(), *x, *y);
-    if (overlapObb3(*x, *y) != r.hit) t.fail("overlapObb3 disagrees: " + s.str(), *x, *y);
-    if (!(std::abs(r.normal.norm() - 1.0) <= 1e-12)) t.fail("normal not unit: " + s.str(), *x, *y);
-    if (r.hit != (r.separation <= 0.0)) t.fail("hit inconsistent with sep: " + s.str(), *x, *y);
+    if (!(err <= kSepTolerance)) fail("separation off: " + m.str());
+    if (checkHit && r.hit != ex.hit) fail("hit wrong: " + m.str());
+    if (overlapObb3(*x, *y) != r.hit) fail("overlapObb3 disagrees: " + m.str());
+    if (!(std::abs(r.normal.norm() - 1.0) <= 1e-12)) fail("normal not unit: " + m.str());
+    if (r.hit != (r.separation <= 0.0)) fail("hit inconsistent with sep: " + m.str());
     // The normal points from the first box towards the second.
     const Eigen::Vector3d d = y->center - x->center;
-    if (!(r.normal.dot(d) >= -1e-9 * (1.0 + d.norm()))) t.fail("normal points backwards", *x, *y);
+    if (!(r.normal.dot(d) >= -1e-9 * (1.0 + d.norm()))) fail("normal points backwards");
   }
   const double asym = std::abs(ab.separation - ba.separation);
-  t.worstAsymmetry = std::max(t.worstAsymmetry, asym);
-  if (!(asym <= 1e-9)) t.fail("separation not symmetric", p.a, p.b);
+  s.noteAsymmetry(asym);
+  if (!(asym <= 1e-9)) f.fail(index, "separation not symmetric\n" + describe(p.a, p.b));
 }
 
-// Runs `count` (scaled) cases of one generator and asserts no failures; prints the statistics.
+// Runs `count` (scaled) cases of one generator through checkPair and asserts no failures.
 void runBox3Class(const char* name, std::uint64_t seed,
                   const std::function<Pair3(std::mt19937_64&)>& gen, int count = kCasesPerClass,
                   bool strictHit = false) {
-  std::mt19937_64 rng(seed);
-  Tally t;
-  const auto start = std::chrono::steady_clock::now();
-  const int n = test3::scaledCount(count);
-  for (int k = 0; k < n; ++k) checkPair(gen(rng), t, strictHit);
-  const double secs =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf(
-      "[ %s ] %d pairs x 2 orders, %d exact hits, %d edge-axis wins, worst |sep err| %.3g m, "
-      "worst asymmetry %.3g m, %.2f s\n",
-      name, t.cases, t.hits, t.crossWins, t.worstSepError, t.worstAsymmetry, secs);
-  EXPECT_EQ(t.failures, 0) << name;
-  EXPECT_EQ(t.cases, n);
+  const ClassStats s = testing::runRandomClass(
+      name, seed, count, [&](std::mt19937_64& rng, int k, Failures& f, ClassStats& stats) {
+        checkPair(gen(rng), k, f, stats, strictHit);
+      });
+  EXPECT_EQ(s.cases, test3::scaledCount(count));
 }
 
 TEST(Obb3Random, GapsBothSidesOfTouching) {
@@ -148,7 +129,8 @@ TEST(Obb3NearParallel, NeverFalselySeparated) {
   std::uint64_t seed = 0x0b3a0100;
   for (const double angle : angles) {
     std::mt19937_64 rng(seed++);
-    Tally t;
+    Failures f;
+    ClassStats t;
     int overlapping = 0;
     const int n = test3::scaledCount(20000);
     for (int k = 0; k < n; ++k) {
@@ -166,12 +148,12 @@ TEST(Obb3NearParallel, NeverFalselySeparated) {
       EXPECT_TRUE(collideObb3(p.b, p.a).hit) << "angle " << angle << "\n" << describe(p.a, p.b);
       EXPECT_TRUE(overlapObb3(p.a, p.b)) << "angle " << angle;
       EXPECT_TRUE(overlapObb3(p.b, p.a)) << "angle " << angle;
-      checkPair(p, t, true, &ex);
+      checkPair(p, k, f, t, true, &ex);
     }
     std::printf("[ near-parallel %g rad ] %d overlapping pairs, worst |sep err| %.3g m\n", angle,
-                overlapping, t.worstSepError);
+                overlapping, t.max_error);
     EXPECT_GT(overlapping, n / 50) << "too few overlapping cases at angle " << angle;
-    EXPECT_EQ(t.failures, 0) << "angle " << angle;
+    EXPECT_EQ(f.count(), 0) << "angle " << angle << "\n" << f.report();
   }
 }
 
@@ -273,7 +255,8 @@ TEST(Obb3Sat, AxisIndexAndNormalOnSimpleCases) {
 TEST(Obb3FastPath, EdgeGapsAtTheErrorBoundMatchTheOracle) {
   for (const double offset : {0.0, 1e7}) {
     std::mt19937_64 rng(offset == 0.0 ? 0x0b3a0200 : 0x0b3a0201);
-    Tally t;
+    Failures f;
+    ClassStats t;
     int in_band = 0;
     int checked = 0;
     const int n = test3::scaledCount(20000);
@@ -291,13 +274,13 @@ TEST(Obb3FastPath, EdgeGapsAtTheErrorBoundMatchTheOracle) {
       in_band += std::abs(ex.separation) < 1e3 * sure ? 1 : 0;
       if (!(std::abs(ex.separation) > sure)) continue;
       ++checked;
-      checkPair(p, t, true, &ex);
+      checkPair(p, k, f, t, true, &ex);
     }
     std::printf("[ fast-path band, offset %g m ] %d checked, %d within 1e-10 of the scale\n",
                 offset, checked, in_band);
     EXPECT_GT(in_band, n / 20) << "too few pairs near the filter's error bound";
     EXPECT_GT(checked, n / 2);
-    EXPECT_EQ(t.failures, 0) << offset;
+    EXPECT_EQ(f.count(), 0) << offset << "\n" << f.report();
   }
 }
 
@@ -305,7 +288,8 @@ TEST(Obb3FastPath, EdgeGapsAtTheErrorBoundMatchTheOracle) {
 // random boxes and each other; strict verdicts wherever the accurate path is sure.
 TEST(Obb3FastPath, DegenerateBoxesMatchTheOracle) {
   std::mt19937_64 rng(0x0b3a0202);
-  Tally t;
+  Failures f;
+  ClassStats t;
   const int n = test3::scaledCount(20000);
   for (int k = 0; k < n; ++k) {
     Pair3 p = test3::gapPair(rng);
@@ -316,9 +300,9 @@ TEST(Obb3FastPath, DegenerateBoxesMatchTheOracle) {
     }
     const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
     const double scale = p.a.half.sum() + p.b.half.sum() + (p.b.center - p.a.center).lpNorm<1>();
-    checkPair(p, t, std::abs(ex.separation) > 1e-13 * scale, &ex);
+    checkPair(p, k, f, t, std::abs(ex.separation) > 1e-13 * scale, &ex);
   }
-  EXPECT_EQ(t.failures, 0);
+  EXPECT_EQ(f.count(), 0) << f.report();
 }
 
 // Stored matrices off a rotation by 1e-12 (the filter's bound widens with frameDefect) and by 1e-9
@@ -326,7 +310,8 @@ TEST(Obb3FastPath, DegenerateBoxesMatchTheOracle) {
 TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
   for (const double eps : {1e-12, 1e-9}) {
     std::mt19937_64 rng(eps < 1e-10 ? 0x0b3a0203 : 0x0b3a0205);
-    Tally t;
+    Failures f;
+    ClassStats t;
     const int n = test3::scaledCount(20000);
     for (int k = 0; k < n; ++k) {
       Pair3 p = test3::gapPair(rng);
@@ -343,13 +328,15 @@ TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
       ++t.cases;
       for (const auto& [x, y] : {std::pair{&p.a, &p.b}, std::pair{&p.b, &p.a}}) {
         const SatResult3 r = collideObb3(*x, *y);
-        if (!(std::abs(r.separation - ex.separation) <= kSepTolerance))
-          t.fail("separation", *x, *y);
-        if (std::abs(ex.separation) > kHitTolerance && r.hit != ex.hit) t.fail("hit", *x, *y);
-        if (overlapObb3(*x, *y) != r.hit) t.fail("overlapObb3 disagrees", *x, *y);
+        const auto fail = [&](const std::string& what) {
+          f.fail(k, what + "\n" + describe(*x, *y));
+        };
+        if (!(std::abs(r.separation - ex.separation) <= kSepTolerance)) fail("separation");
+        if (std::abs(ex.separation) > kHitTolerance && r.hit != ex.hit) fail("hit");
+        if (overlapObb3(*x, *y) != r.hit) fail("overlapObb3 disagrees");
       }
     }
-    EXPECT_EQ(t.failures, 0) << eps;
+    EXPECT_EQ(f.count(), 0) << eps << "\n" << f.report();
     EXPECT_EQ(t.cases, n);
   }
 }

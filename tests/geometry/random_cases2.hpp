@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <numbers>
 #include <random>
@@ -16,7 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "../support/test_scale.hpp"
+#include "../support/random_class.hpp"
+#include "../support/random_draws.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/sat_result.hpp"
@@ -29,13 +29,11 @@ class Random {
   /// Seeded generator; every test uses its own fixed seed.
   explicit Random(std::uint64_t seed) : rng_(seed) {}
   /// Uniform in [lo, hi).
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng_);
-  }
+  double uniform(double lo, double hi) { return cardemo::testing::uniform(rng_, lo, hi); }
   /// Log-uniform in [lo, hi).
-  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
+  double logUniform(double lo, double hi) { return cardemo::testing::logUniform(rng_, lo, hi); }
   /// Uniform integer in [lo, hi].
-  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  int integer(int lo, int hi) { return uniformInt(rng_, lo, hi); }
   /// +1 or -1.
   double sign() { return integer(0, 1) == 0 ? -1.0 : 1.0; }
   /// Uniform unit vector.
@@ -122,64 +120,17 @@ inline std::vector<Eigen::Vector2d> pointsOf(const ConvexPolygon& p) {
 
 namespace cardemo::testing {
 
-/// Contract accuracy of the pair queries (CONTRACT.md, "Pair queries").
-inline constexpr double kHitTolerance = 1e-6;
-/// Contract bound on |sep - exact sep|, metres.
-inline constexpr double kSepTolerance = 2e-6;
-
-/// Collects failures of a property over many cases and keeps the first few messages.
-class Failures {
- public:
-  /// Records a failure when `ok` is false.
-  void check(bool ok, int index, const std::string& what) {
-    if (ok) return;
-    if (count_ < 5) messages_ << "case " << index << ": " << what << "\n";
-    ++count_;
-  }
-  /// Number of failed checks.
-  [[nodiscard]] int count() const { return count_; }
-  /// The first failure messages.
-  [[nodiscard]] std::string report() const { return messages_.str(); }
-
- private:
-  int count_ = 0;
-  std::ostringstream messages_;
-};
-
-/// Statistics of one batch of pair comparisons.
-struct PairStats {
-  int cases = 0;           ///< Pairs checked.
-  int exact_hits = 0;      ///< Pairs the oracle calls touching or overlapping.
-  int borderline = 0;      ///< Pairs with |exact sep| <= kHitTolerance.
-  double max_error = 0.0;  ///< Largest |sep - exact sep| seen, metres.
-};
-
-/// Pairs per random class at full scale (CARDEMO_TEST_SCALE scales it).
-inline constexpr int kCasesPerClass = 100000;
-
-/// Runs one seeded random class: scaledCount(kCasesPerClass) pairs from `make(rng)`; `check(a, b,
-/// index, f, stats)` compares the fast code with the oracle on one pair and returns the oracle's
-/// result, which is counted (cases, exact hits, borderline ones).
+/// Runs one seeded 2D class (named after the running test): kCasesPerClass pairs from
+/// `make(rng)`; `check(a, b, index, f, stats)` compares the fast code with the oracle on one pair
+/// and returns the oracle's result, which is tallied.
 template <class Make, class Check>
-PairStats runRandomClass(std::uint64_t seed, const Make& make, Failures& f, const Check& check) {
-  Random rng(seed);
-  PairStats stats;
-  const int n = scaledCount(kCasesPerClass);
-  for (int i = 0; i < n; ++i) {
-    const auto [a, b] = make(rng);
-    const auto ex = check(a, b, i, f, stats);
-    ++stats.cases;
-    stats.exact_hits += ex.hit ? 1 : 0;
-    stats.borderline += std::abs(ex.separation) <= kHitTolerance ? 1 : 0;
-  }
-  return stats;
-}
-
-/// Expects no failures in a random class and prints its counts.
-inline void expectCleanClass(const Failures& f, const PairStats& s) {
-  EXPECT_EQ(f.count(), 0) << f.report();
-  std::printf("    %d pairs, %d exact hits, %d borderline, max |sep - exact| = %.3g m\n", s.cases,
-              s.exact_hits, s.borderline, s.max_error);
+ClassStats runPairClass(std::uint64_t seed, const Make& make, const Check& check) {
+  return runRandomClass<Random>(currentTestName(), seed, kCasesPerClass,
+                                [&](Random& rng, int i, Failures& f, ClassStats& stats) {
+                                  const auto [a, b] = make(rng);
+                                  const auto ex = check(a, b, i, f, stats);
+                                  stats.tally(ex.hit, ex.separation);
+                                });
 }
 
 /// Checks one fast SAT result in one argument order against the exact separation and hit.
@@ -187,7 +138,7 @@ inline void expectCleanClass(const Failures& f, const PairStats& s) {
 template <class PA, class PB>
 void checkAgainstExact(const SatResult2& r, bool exact_hit, double exact_sep, const PA& points_a,
                        const PB& points_b, const Eigen::Vector2d& ref, int index, Failures& f,
-                       PairStats& stats) {
+                       ClassStats& stats) {
   std::ostringstream ctx;
   ctx.precision(17);
   ctx << " (sep " << r.separation << ", exact " << exact_sep << ", hit " << r.hit << ", exact hit "

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "../support/random_draws.hpp"
 #include "../support/test_scale.hpp"
 #include "geometry/obb3.hpp"
 
@@ -16,23 +17,11 @@ struct Pair3 {
   Obb3 b;  ///< Second box.
 };
 
+using testing::logUniform;
+using testing::randomSign;
 using testing::scaledCount;
 using testing::testScale;
-
-/// Uniform in [lo, hi).
-inline double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-/// Log-uniform in [lo, hi), lo > 0.
-inline double logUniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::exp(uniform(rng, std::log(lo), std::log(hi)));
-}
-
-/// +1 or -1 with equal odds.
-inline double randomSign(std::mt19937_64& rng) {
-  return (rng() & 1) != 0 ? 1.0 : -1.0;
-}
+using testing::uniform;
 
 /// Uniformly distributed unit vector.
 inline Eigen::Vector3d randomUnit(std::mt19937_64& rng) {

@@ -5,14 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "../geometry/random_cases3.hpp"
 #include "../support/batch_paths.hpp"
+#include "../support/random_class.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/batch_path.hpp"
 
@@ -21,8 +25,10 @@ namespace {
 
 using test3::Pair3;
 
-constexpr double kHitTolerance = 1e-6;  // CONTRACT: hit right when |sep| > 1e-6 m
-constexpr double kSepTolerance = 2e-6;  // CONTRACT: sep within 2e-6 m
+using testing::ClassStats;
+using testing::Failures;
+using testing::kHitTolerance;
+using testing::kSepTolerance;
 // Batch and scalar are both within ~1e-14 m of the truth here; 1e-9 m leaves room for sizes and
 // offsets up to 1e7 m while still catching any wrong axis or sign.
 constexpr double kScalarTolerance = 1e-9;
@@ -44,61 +50,53 @@ std::vector<Obb3> batchFor(const Pair3& p, std::mt19937_64& rng) {
   return boxes;
 }
 
-struct Tally {
-  int pairs = 0;
-  int hits = 0;
-  double worst_exact = 0.0;
-  double worst_scalar = 0.0;
-};
-
+// Each case is a generated pair widened to a batch (batchFor), checked box by box on every path
+// against the oracle and the scalar collideObb3; the class's stats count boxes, not cases.
 void runClass(const char* name, std::uint64_t seed,
               const std::function<Pair3(std::mt19937_64&)>& gen, int count = 1500,
               bool strict_hit = false) {
   testing::BatchPathGuard guard;
-  std::mt19937_64 rng(seed);
-  Tally t;
-  const int n = test3::scaledCount(count);
-  for (int k = 0; k < n; ++k) {
-    const Pair3 p = gen(rng);
-    const std::vector<Obb3> boxes = batchFor(p, rng);
-    const Obb3Batch many(boxes);
-    std::vector<std::vector<double>> seps;
-    std::vector<std::vector<std::uint8_t>> hits;
-    for (const BatchPath path : testing::availableBatchPaths()) {
-      setBatchPath(path);
-      seps.emplace_back(boxes.size());
-      hits.emplace_back(boxes.size(), 7);
-      separationObb3Batch(p.a, many, seps.back());
-      overlapObb3Batch(p.a, many, hits.back());
-    }
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const double sep = seps[0][i];
-      const bool hit = hits[0][i] == 1;
-      for (std::size_t q = 1; q < seps.size(); ++q) {
-        ASSERT_TRUE(sameBits(seps[q][i], sep)) << name << " case " << k << ": paths differ";
-        ASSERT_EQ(hits[q][i], hits[0][i]) << name << " case " << k << ": paths differ";
-      }
-      ASSERT_EQ(hit, sep <= 0.0) << name << " case " << k << ": overlap disagrees with sep";
-      const exact::ExactResult ex = exact::collideObb3(p.a, boxes[i]);
-      const SatResult3 scalar = collideObb3(p.a, boxes[i]);
-      const double err = std::abs(sep - ex.separation);
-      const double diff = std::abs(sep - scalar.separation);
-      t.worst_exact = std::max(t.worst_exact, err);
-      t.worst_scalar = std::max(t.worst_scalar, diff);
-      ASSERT_LE(err, kSepTolerance) << name << " case " << k << " box " << i;
-      ASSERT_LE(diff, kScalarTolerance) << name << " case " << k << " box " << i;
-      if (strict_hit || std::abs(ex.separation) > kHitTolerance) {
-        ASSERT_EQ(hit, ex.hit) << name << " case " << k << " box " << i << " sep " << sep
-                               << " exact " << ex.separation;
-      }
-      ++t.pairs;
-      t.hits += ex.hit ? 1 : 0;
-    }
-  }
-  std::printf(
-      "    [%s] %d pairs, %d exact hits, worst |sep - exact| %.3g m, |sep - scalar| %.3g m\n", name,
-      t.pairs, t.hits, t.worst_exact, t.worst_scalar);
-  EXPECT_GT(t.hits, 0) << name;
+  double worst_scalar = 0.0;
+  const ClassStats s = testing::runRandomClass(
+      name, seed, count, [&](std::mt19937_64& rng, int k, Failures& f, ClassStats& t) {
+        const Pair3 p = gen(rng);
+        const std::vector<Obb3> boxes = batchFor(p, rng);
+        const Obb3Batch many(boxes);
+        std::vector<std::vector<double>> seps;
+        std::vector<std::vector<std::uint8_t>> hits;
+        for (const BatchPath path : testing::availableBatchPaths()) {
+          setBatchPath(path);
+          seps.emplace_back(boxes.size());
+          hits.emplace_back(boxes.size(), 7);
+          separationObb3Batch(p.a, many, seps.back());
+          overlapObb3Batch(p.a, many, hits.back());
+        }
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+          const double sep = seps[0][i];
+          const bool hit = hits[0][i] == 1;
+          const std::string box = " box " + std::to_string(i);
+          for (std::size_t q = 1; q < seps.size(); ++q) {
+            f.check(sameBits(seps[q][i], sep) && hits[q][i] == hits[0][i], k, "paths differ" + box);
+          }
+          f.check(hit == (sep <= 0.0), k, "overlap disagrees with sep" + box);
+          const exact::ExactResult ex = exact::collideObb3(p.a, boxes[i]);
+          const SatResult3 scalar = collideObb3(p.a, boxes[i]);
+          const double err = std::abs(sep - ex.separation);
+          const double diff = std::abs(sep - scalar.separation);
+          t.max_error = std::max(t.max_error, err);
+          worst_scalar = std::max(worst_scalar, diff);
+          f.check(err <= kSepTolerance, k, "sep off the oracle" + box);
+          f.check(diff <= kScalarTolerance, k, "sep off the scalar" + box);
+          if (strict_hit || std::abs(ex.separation) > kHitTolerance) {
+            f.check(hit == ex.hit, k,
+                    "hit wrong" + box + " sep " + std::to_string(sep) + " exact " +
+                        std::to_string(ex.separation));
+          }
+          t.tally(ex.hit, ex.separation);
+        }
+      });
+  std::printf("[ %s ] worst |sep - scalar| %.3g m\n", name, worst_scalar);
+  EXPECT_GT(s.exact_hits, 0) << name;
 }
 
 TEST(Obb3Batch, StoresTheBoxesExactly) {

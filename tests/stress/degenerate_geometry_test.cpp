@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -22,8 +23,8 @@
 namespace cardemo::stress {
 namespace {
 
+using cardemo::testing::ClassStats;
 using cardemo::testing::Failures;
-using cardemo::testing::PairStats;
 using cardemo::testing::Random;
 
 // A box with sides log-uniform in 1 mm..1 km and aspect ratio up to 1e4.
@@ -35,29 +36,26 @@ Obb2 wideRangeBox(Random& rng, const Eigen::Vector2d& center) {
   return {center, rng.direction(), half};
 }
 
-void report(const char* name, const Failures& f, const PairStats& s) {
-  std::printf("[ %s ] %d pairs, %d exact hits, %d borderline, max |sep - exact| = %.3g m\n", name,
-              s.cases, s.exact_hits, s.borderline, s.max_error);
+void report(const char* name, const Failures& f, const ClassStats& s) {
+  testing::printClassStats(name, s);
   EXPECT_EQ(f.count(), 0) << name << "\n" << f.report();
 }
 
 // Both argument orders against the oracle (random_cases2's checks: hit, sep, unit normal that
 // realises sep).
-void checkBoxes(const Obb2& a, const Obb2& b, int i, Failures& f, PairStats& s) {
+void checkBoxes(const Obb2& a, const Obb2& b, int i, Failures& f, ClassStats& s) {
   const exact::ExactResult ex = exact::collideObb2(a, b);
   const auto ca = a.corners(), cb = b.corners();
   testing::checkAgainstExact(collideObb2(a, b), ex.hit, ex.separation, ca, cb, a.center, i, f, s);
   testing::checkAgainstExact(collideObb2(b, a), ex.hit, ex.separation, cb, ca, a.center, i, f, s);
   f.check(overlapObb2(a, b) == collideObb2(a, b).hit, i, "overlapObb2 differs");
-  ++s.cases;
-  s.exact_hits += ex.hit ? 1 : 0;
-  s.borderline += std::abs(ex.separation) <= testing::kHitTolerance ? 1 : 0;
+  s.tally(ex.hit, ex.separation);
 }
 
 TEST(Degenerate2d, BoxesFromAMillimetreToAKilometre) {
   Random rng(0xde01);
   Failures f;
-  PairStats s;
+  ClassStats s;
   const int n = static_cast<int>(scaled(10000));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d base = rng.farPoint(1e7);
@@ -79,7 +77,7 @@ TEST(Degenerate2d, BoxesFromAMillimetreToAKilometre) {
 TEST(Degenerate2d, NearParallelAtEverySize) {
   Random rng(0xde02);
   Failures f;
-  PairStats s;
+  ClassStats s;
   const int n = static_cast<int>(scaled(10000));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d base = rng.farPoint(1e7);
@@ -107,7 +105,7 @@ TEST(Degenerate2d, NearParallelAtEverySize) {
 TEST(Degenerate2d, ExactTouchingSharedEdgesAndCorners) {
   Random rng(0xde03);
   Failures f;
-  PairStats s;
+  ClassStats s;
   const int n = static_cast<int>(scaled(10000));
   int corners = 0;
   for (int i = 0; i < n; ++i) {
@@ -145,7 +143,7 @@ TEST(Degenerate2d, ExactTouchingSharedEdgesAndCorners) {
 TEST(Degenerate2d, SliverPolygons) {
   Random rng(0xde04);
   Failures f;
-  PairStats s;
+  ClassStats s;
   const int n = static_cast<int>(scaled(4000));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d base = rng.farPoint(1e7);
@@ -169,44 +167,40 @@ TEST(Degenerate2d, SliverPolygons) {
 }
 
 // 3D: a tests/geometry generator's pair scaled about A's centre by 1/10..10 (sizes 1 mm..1 km),
-// against the oracle in both orders; `strict`: the oracle's hit must be matched even within
-// 1e-6 m (used where the construction guarantees a clear verdict).
+// against the oracle in both orders; stops after 5 failures.
 void run3d(const char* name, std::uint64_t seed,
            const std::function<test3::Pair3(std::mt19937_64&)>& make, int count) {
   std::mt19937_64 rng(seed);
-  int failures = 0, hits = 0, edge_wins = 0;
-  double worst = 0.0;
+  Failures f;
+  ClassStats s;
   const int n = static_cast<int>(scaled(count));
-  for (int i = 0; i < n && failures < 5; ++i) {
+  for (int i = 0; i < n && f.count() < 5; ++i) {
     test3::Pair3 p = make(rng);
     const double k = test3::logUniform(rng, 0.1, 10.0);
     p.b.center = p.a.center + (p.b.center - p.a.center) * k;
     p.a.half *= k;
     p.b.half *= k;
     const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
-    hits += ex.hit ? 1 : 0;
+    s.tally(ex.hit, ex.separation);
     for (const auto& [x, y] : {std::pair{&p.a, &p.b}, std::pair{&p.b, &p.a}}) {
       const SatResult3 r = collideObb3(*x, *y);
-      edge_wins += r.axis_index >= 6 ? 1 : 0;
+      s.countAxis(r.axis_index >= 6);
       const double err = std::abs(r.separation - ex.separation);
-      worst = std::max(worst, err);
-      const bool hit_ok = std::abs(ex.separation) <= 1e-6 || r.hit == ex.hit;
+      s.max_error = std::max(s.max_error, err);
+      const bool hit_ok = std::abs(ex.separation) <= testing::kHitTolerance || r.hit == ex.hit;
       // Never a false "separated" for boxes that truly touch or overlap, at any distance.
       const bool no_false_gap = !ex.hit || r.hit;
-      if (!(err <= 2e-6) || !hit_ok || !no_false_gap || overlapObb3(*x, *y) != r.hit) {
-        ++failures;
+      if (!(err <= testing::kSepTolerance) || !hit_ok || !no_false_gap ||
+          overlapObb3(*x, *y) != r.hit) {
         std::ostringstream m;
         m.precision(17);
-        m << name << " case " << i << ": sep " << r.separation << " exact " << ex.separation
-          << " hit " << r.hit << " exact hit " << ex.hit << " axis " << r.axis_index;
-        ADD_FAILURE() << m.str();
+        m << "sep " << r.separation << " exact " << ex.separation << " hit " << r.hit
+          << " exact hit " << ex.hit << " axis " << r.axis_index;
+        f.fail(i, m.str());
       }
     }
   }
-  std::printf(
-      "[ %s ] %d pairs x 2 orders, %d exact hits, %d edge-axis wins, worst |sep err| %.3g m\n",
-      name, n, hits, edge_wins, worst);
-  EXPECT_EQ(failures, 0);
+  report(name, f, s);
 }
 
 TEST(Degenerate3d, NearParallelEdgesAtEverySize) {
