@@ -106,19 +106,7 @@ SweepStats checkAgainstOracle(const char* label, int count, std::uint64_t seed, 
   Failures f;
   SweepStats stats;
   for (int i = 0; i < count; ++i) {
-    const Eigen::Vector2d centre = rng.farPoint(1e7);
-    Shape b;
-    Eigen::Vector2d target = centre;
-    double reach = 0.0;
-    if constexpr (std::is_same_v<Shape, Obb2>) {
-      b = rng.extremeBox(centre);
-      reach = b.half.norm();
-    } else {
-      b = rng.polygon(centre, 0.01, 100.0);
-      target = b.centroid();
-      reach = testing::polygonReach(b);
-    }
-    const testing::SweepCase c = testing::sweepCase(rng, target, reach);
+    const auto [b, c] = testing::sweepTarget<Shape>(rng);
     const SweepResult2 r = fast(c.a, c.d, b);
     const exact::ExactSweep x = oracle(c.a, c.d, b, 0.0);
     ++stats.cases;

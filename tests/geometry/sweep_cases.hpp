@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <numbers>
+#include <type_traits>
 
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
@@ -44,6 +45,33 @@ inline double polygonReach(const ConvexPolygon& p) {
   double r = 0.0;
   for (int i = 0; i < p.count; ++i) r = std::max(r, (p.vertex(i) - c).norm());
   return r;
+}
+
+/// A static shape up to 1e7 m from the origin (an extreme box, or a polygon of 1 cm to 100 m) and a
+/// moving box aimed at it (sweepCase).
+template <class Shape>
+struct SweepTarget {
+  Shape b;      ///< The static shape.
+  SweepCase c;  ///< The moving box and its displacement.
+};
+
+/// Draws one SweepTarget: the shape, then the moving box aimed at its centre or centroid.
+template <class Shape>
+SweepTarget<Shape> sweepTarget(Random& rng) {
+  const Eigen::Vector2d centre = rng.farPoint(1e7);
+  SweepTarget<Shape> t;
+  Eigen::Vector2d target = centre;
+  double reach = 0.0;
+  if constexpr (std::is_same_v<Shape, Obb2>) {
+    t.b = rng.extremeBox(centre);
+    reach = t.b.half.norm();
+  } else {
+    t.b = rng.polygon(centre, 0.01, 100.0);
+    target = t.b.centroid();
+    reach = polygonReach(t.b);
+  }
+  t.c = sweepCase(rng, target, reach);
+  return t;
 }
 
 }  // namespace cardemo::testing

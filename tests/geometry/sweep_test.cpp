@@ -173,19 +173,7 @@ void checkAgainstSampledStatic(const char* label, int count, std::uint64_t seed,
   Failures f;
   int hits = 0, starts = 0;
   for (int i = 0; i < count; ++i) {
-    const Eigen::Vector2d centre = rng.farPoint(1e7);
-    Shape b;
-    Eigen::Vector2d target = centre;
-    double reach = 0.0;
-    if constexpr (std::is_same_v<Shape, Obb2>) {
-      b = rng.extremeBox(centre);
-      reach = b.half.norm();
-    } else {
-      b = rng.polygon(centre, 0.01, 100.0);
-      target = b.centroid();
-      reach = testing::polygonReach(b);
-    }
-    const testing::SweepCase c = testing::sweepCase(rng, target, reach);
+    const auto [b, c] = testing::sweepTarget<Shape>(rng);
     const SweepResult2 r = sweep(c.a, c.d, b);
     const SatResult2 s0 = collide(c.a, b);
     f.check(std::abs(r.start_separation - s0.separation) <= start_tolerance, i,
