@@ -328,7 +328,8 @@ TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
       ++t.cases;
       for (const auto& [x, y] : {std::pair{&p.a, &p.b}, std::pair{&p.b, &p.a}}) {
         const SatResult3 r = collideObb3(*x, *y);
-        const auto fail = [&](const std::string& what) {
+        // Structured bindings are captured by copy: clang 14 cannot capture them by reference.
+        const auto fail = [&, x = x, y = y](const std::string& what) {
           f.fail(k, what + "\n" + describe(*x, *y));
         };
         if (!(std::abs(r.separation - ex.separation) <= kSepTolerance)) fail("separation");
