@@ -81,15 +81,21 @@ CarState slideCar(CarState next, const CarState& steered, bool handbrake, const 
   return next;
 }
 
+double steerTarget(const CarParams& params, double speed, const InputFrame& input) {
+  if (input.left == input.right) return 0.0;  // the lock (an atan at speed) only when steering
+  const double lock = effectiveLock(params, speed, input.handbrake);
+  return input.left ? lock : -lock;
+}
+
 CarState integrateCar(const CarState& state, const InputFrame& input, const CarParams& params,
                       double dt) {
+  return integrateCarToward(state, input, params, dt, steerTarget(params, state.speed, input));
+}
+
+CarState integrateCarToward(const CarState& state, const InputFrame& input, const CarParams& params,
+                            double dt, double steer_target) {
   CarState steered = state;
-  double target = 0.0;
-  if (input.left != input.right) {  // the lock (an atan at speed) only matters when steering
-    const double lock = effectiveLock(params, state.speed, input.handbrake);
-    target = input.left ? lock : -lock;
-  }
-  steered.steer = approach(state.steer, target, params.steer_rate * dt);
+  steered.steer = approach(state.steer, steer_target, params.steer_rate * dt);
 
   const SpeedLaw law = speedLawFor(state.speed, input, params);
   CarState next;

@@ -80,6 +80,14 @@ struct CarState {
 [[nodiscard]] CarState integrateCar(const CarState& state, const InputFrame& input,
                                     const CarParams& params, double dt);
 
+/// The wheel angle `input` steers towards at `speed`: +-effectiveLock, or 0 when not steering.
+[[nodiscard]] double steerTarget(const CarParams& params, double speed, const InputFrame& input);
+
+/// integrateCar with the steering target given: `steer_target` must be steerTarget(params,
+/// state.speed, input), computed once by a caller that needs the lock too.
+[[nodiscard]] CarState integrateCarToward(const CarState& state, const InputFrame& input,
+                                          const CarParams& params, double dt, double steer_target);
+
 /// The lateral split step after the integrator (`steered` is the state before it): under the
 /// handbrake the body turns by the integrator's yaw while the velocity keeps its direction (the
 /// turn becomes slip); the position moves by the slip over dt; the slip then decays towards 0 at

@@ -478,7 +478,8 @@ void World::step(const InputFrame& input) {
   last_input_ = in;
   braking_ = start.speed != 0.0 && (in.handbrake || (in.up && in.down) ||
                                     (in.down && start.speed > 0.0) || (in.up && start.speed < 0.0));
-  const CarState next = integrateCar(start, in, params_, 1.0 / settings_.hz);
+  const double steer_target = steerTarget(params_, start.speed, in);
+  const CarState next = integrateCarToward(start, in, params_, 1.0 / settings_.hz, steer_target);
   ++frame_;
   previous_contacts_.swap(contacts_);
   contacts_.clear();
@@ -503,9 +504,10 @@ void World::step(const InputFrame& input) {
   // Turning at the grip limit: the driver asks for more lock than the tyres can use.
   bool grip_limited = false;
   if (in.left != in.right && !in.handbrake) {
-    const double grip_lock = gripLock(params_, start.speed);
-    grip_limited =
-        grip_lock < steeringLock(params_, start.speed) && std::abs(next.steer) >= grip_lock;
+    // The wheel's target is the effective lock, min(steering lock, grip lock): below the steering
+    // lock it is the grip lock.
+    const double lock = std::abs(steer_target);
+    grip_limited = lock < steeringLock(params_, start.speed) && std::abs(next.steer) >= lock;
   }
   sliding_ = grip_limited || std::abs(car_.slip) > params_.skid_slip ||
              (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
