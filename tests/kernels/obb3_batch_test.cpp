@@ -50,6 +50,26 @@ std::vector<Obb3> batchFor(const Pair3& p, std::mt19937_64& rng) {
   return boxes;
 }
 
+// Separation and hit of `a` against every box of `many` on every batch path this CPU has
+// (testing::availableBatchPaths order); the caller's BatchPathGuard restores the path.
+struct PathResults {
+  std::vector<std::vector<double>> seps;  ///< Per path, per box.
+  std::vector<std::vector<std::uint8_t>>
+      hits;  ///< Per path, per box (7 where nothing was written).
+};
+
+PathResults onEveryPath(const Obb3& a, const Obb3Batch& many) {
+  PathResults out;
+  for (const BatchPath path : testing::availableBatchPaths()) {
+    setBatchPath(path);
+    out.seps.emplace_back(many.size());
+    out.hits.emplace_back(many.size(), 7);
+    separationObb3Batch(a, many, out.seps.back());
+    overlapObb3Batch(a, many, out.hits.back());
+  }
+  return out;
+}
+
 // Each case is a generated pair widened to a batch (batchFor), checked box by box on every path
 // against the oracle and the scalar collideObb3; the class's stats count boxes, not cases.
 void runClass(const char* name, std::uint64_t seed,
@@ -61,36 +81,30 @@ void runClass(const char* name, std::uint64_t seed,
       name, seed, count, [&](std::mt19937_64& rng, int k, Failures& f, ClassStats& t) {
         const Pair3 p = gen(rng);
         const std::vector<Obb3> boxes = batchFor(p, rng);
-        const Obb3Batch many(boxes);
-        std::vector<std::vector<double>> seps;
-        std::vector<std::vector<std::uint8_t>> hits;
-        for (const BatchPath path : testing::availableBatchPaths()) {
-          setBatchPath(path);
-          seps.emplace_back(boxes.size());
-          hits.emplace_back(boxes.size(), 7);
-          separationObb3Batch(p.a, many, seps.back());
-          overlapObb3Batch(p.a, many, hits.back());
-        }
+        const PathResults on = onEveryPath(p.a, Obb3Batch(boxes));
         for (std::size_t i = 0; i < boxes.size(); ++i) {
-          const double sep = seps[0][i];
-          const bool hit = hits[0][i] == 1;
-          const std::string box = " box " + std::to_string(i);
-          for (std::size_t q = 1; q < seps.size(); ++q) {
-            f.check(sameBits(seps[q][i], sep) && hits[q][i] == hits[0][i], k, "paths differ" + box);
+          const double sep = on.seps[0][i];
+          const bool hit = on.hits[0][i] == 1;
+          // Messages are built only for a failure: this runs for every box of every case.
+          const auto fail = [&](const char* what) {
+            f.fail(k,
+                   std::string(what) + " box " + std::to_string(i) + " sep " + std::to_string(sep));
+          };
+          for (std::size_t q = 1; q < on.seps.size(); ++q) {
+            if (!sameBits(on.seps[q][i], sep) || on.hits[q][i] != on.hits[0][i])
+              fail("paths differ");
           }
-          f.check(hit == (sep <= 0.0), k, "overlap disagrees with sep" + box);
+          if (hit != (sep <= 0.0)) fail("overlap disagrees with sep");
           const exact::ExactResult ex = exact::collideObb3(p.a, boxes[i]);
           const SatResult3 scalar = collideObb3(p.a, boxes[i]);
           const double err = std::abs(sep - ex.separation);
           const double diff = std::abs(sep - scalar.separation);
           t.max_error = std::max(t.max_error, err);
           worst_scalar = std::max(worst_scalar, diff);
-          f.check(err <= kSepTolerance, k, "sep off the oracle" + box);
-          f.check(diff <= kScalarTolerance, k, "sep off the scalar" + box);
-          if (strict_hit || std::abs(ex.separation) > kHitTolerance) {
-            f.check(hit == ex.hit, k,
-                    "hit wrong" + box + " sep " + std::to_string(sep) + " exact " +
-                        std::to_string(ex.separation));
+          if (!(err <= kSepTolerance)) fail("sep off the oracle");
+          if (!(diff <= kScalarTolerance)) fail("sep off the scalar");
+          if ((strict_hit || std::abs(ex.separation) > kHitTolerance) && hit != ex.hit) {
+            fail("hit wrong");
           }
           t.tally(ex.hit, ex.separation);
         }
@@ -191,16 +205,9 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
       b.center = first.a.center + test3::randomUnit(rng) * test3::uniform(rng, 0.0, 1.5 * reach);
       boxes.push_back(b);
     }
-    const Obb3Batch many(boxes);
-    std::vector<std::vector<double>> seps;
-    std::vector<std::vector<std::uint8_t>> hit_sets;
-    for (const BatchPath path : testing::availableBatchPaths()) {
-      setBatchPath(path);
-      seps.emplace_back(boxes.size());
-      hit_sets.emplace_back(boxes.size(), 7);
-      separationObb3Batch(first.a, many, seps.back());
-      overlapObb3Batch(first.a, many, hit_sets.back());
-    }
+    const PathResults on = onEveryPath(first.a, Obb3Batch(boxes));
+    const auto& seps = on.seps;
+    const auto& hit_sets = on.hits;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       const double sep = seps[0][i];
       for (std::size_t q = 1; q < seps.size(); ++q) {

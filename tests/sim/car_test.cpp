@@ -386,5 +386,30 @@ TEST(Car, BoxFollowsTheState) {
   EXPECT_EQ(b.half, Eigen::Vector2d(2.25, 0.9));
 }
 
+// steerTarget is the wheel's goal integrateCar steers to; integrateCarToward with it is
+// integrateCar.
+TEST(Car, IntegrateCarTowardItsSteerTargetIsIntegrateCar) {
+  const CarParams p;
+  CarState s;
+  s.speed = 15.0;
+  for (const InputFrame in :
+       {InputFrame{true, false, true, false}, InputFrame{false, false, false, true},
+        InputFrame{false, false, true, true}, InputFrame{false, false, true, false, true}}) {
+    const double target = steerTarget(p, s.speed, in);
+    if (in.left == in.right) {
+      EXPECT_EQ(target, 0.0);
+    } else {
+      EXPECT_EQ(std::abs(target), effectiveLock(p, s.speed, in.handbrake));
+      EXPECT_EQ(target > 0.0, in.left);
+    }
+    const CarState a = integrateCar(s, in, p, kDt);
+    const CarState b = integrateCarToward(s, in, p, kDt, target);
+    EXPECT_EQ(a.steer, b.steer);
+    EXPECT_EQ(a.heading, b.heading);
+    EXPECT_EQ(a.position, b.position);
+    EXPECT_EQ(a.speed, b.speed);
+  }
+}
+
 }  // namespace
 }  // namespace cardemo

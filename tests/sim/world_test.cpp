@@ -13,6 +13,7 @@
 namespace cardemo {
 namespace {
 
+using testing::kLeft;
 using testing::kNone;
 using testing::kUp;
 
@@ -271,6 +272,30 @@ TEST(World, RenderingAccessorsFollowTheInput) {
   const InputFrame handbrake{false, false, false, false, true};
   world.step(handbrake);
   EXPECT_TRUE(world.braking());
+}
+
+// The skid flag at the grip limit: turning at speed, the wheel settles on the grip lock (below the
+// steering lock) and the tyres are at their limit; at walking pace the steering lock binds first.
+TEST(World, SlidingWhenTheGripLimitsTheTurn) {
+  const InputFrame up_left{true, false, true, false};
+  Scene fast = sceneWith({});
+  fast.player.speed = 20.0;
+  World at_speed(std::move(fast));
+  const CarParams p;  // the scene's car: sceneWith sets no parameter
+  ASSERT_LT(gripLock(p, 20.0), steeringLock(p, 20.0));
+  at_speed.step(up_left);
+  EXPECT_FALSE(at_speed.sliding()) << "the wheel has not reached the grip lock yet";
+  for (int f = 0; f < 10; ++f) at_speed.step(up_left);  // 2.5 rad/s reaches 0.06 rad in 3 frames
+  EXPECT_TRUE(at_speed.sliding());
+  at_speed.step(kUp);
+  EXPECT_FALSE(at_speed.sliding()) << "no steering, no grip limit";
+
+  Scene slow = sceneWith({});
+  slow.player.speed = 3.0;
+  World walking(std::move(slow));
+  ASSERT_GT(gripLock(p, 3.0), steeringLock(p, 3.0));
+  for (int f = 0; f < 60; ++f) walking.step(kLeft);
+  EXPECT_FALSE(walking.sliding());
 }
 
 }  // namespace
