@@ -9,6 +9,7 @@
 #include "bench_registry.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb3.hpp"
+#include "geometry/polygon_store.hpp"
 #include "geometry/sat_obb2.hpp"
 #include "kernels/manifold2.hpp"
 
@@ -19,8 +20,10 @@
 namespace cardemo::bench {
 namespace {
 
+// Packed as a scene of many polygons would be (68 bytes a quadrilateral; a ConvexPolygon has room
+// for 16 vertices, 272 bytes).
 struct PolygonPairs {
-  std::vector<ConvexPolygon> a, b;
+  PolygonStore a, b;
 };
 
 const PolygonPairs& polygonPairs(std::size_t n) {
@@ -29,9 +32,11 @@ const PolygonPairs& polygonPairs(std::size_t n) {
   if (!slot) {
     slot = std::make_unique<PolygonPairs>();
     const PairSet2& set = pairSet2(n);
+    slot->a.reserve(n, 4 * n);
+    slot->b.reserve(n, 4 * n);
     for (std::size_t i = 0; i < n; ++i) {
-      slot->a.push_back(ConvexPolygon::fromObb(set.a[i]));
-      slot->b.push_back(ConvexPolygon::fromObb(set.b[i]));
+      slot->a.add(ConvexPolygon::fromObb(set.a[i]));
+      slot->b.add(ConvexPolygon::fromObb(set.b[i]));
     }
   }
   return *slot;

@@ -9,6 +9,7 @@
 
 #include "geometry/aabb.hpp"
 #include "geometry/obb2.hpp"
+#include "geometry/polygon_view.hpp"
 #include "geometry/sat_result.hpp"
 
 namespace cardemo {
@@ -31,6 +32,8 @@ struct ConvexPolygon {
   [[nodiscard]] const Eigen::Vector2d& vertex(int i) const {
     return vertices[static_cast<std::size_t>(i)];
   }
+  /// The polygon as a view (what the pair queries take); valid while this polygon is unchanged.
+  [[nodiscard]] operator PolygonView() const { return {vertices.data(), count}; }
   /// Tight axis-aligned bounds.
   [[nodiscard]] Aabb2 aabb() const;
   /// Mean of the vertices (a point strictly inside).
@@ -40,12 +43,12 @@ struct ConvexPolygon {
 /// SAT over the edge normals of both polygons: separation and unit normal from A towards B
 /// (src/geometry/sat_polygon.cpp).
 /// Accurate far from the origin (coordinates are taken relative to A's first vertex first).
-[[nodiscard]] SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b);
+[[nodiscard]] SatResult2 collidePolygons(PolygonView a, PolygonView b);
 
 /// SAT between a polygon and a box (box axes + polygon edge normals); normal from A (polygon) to B.
-[[nodiscard]] SatResult2 collidePolygonObb(const ConvexPolygon& a, const Obb2& b);
+[[nodiscard]] SatResult2 collidePolygonObb(PolygonView a, const Obb2& b);
 
 /// SAT between a box and a polygon; normal from A (box) to B (polygon).
-[[nodiscard]] SatResult2 collideObbPolygon(const Obb2& a, const ConvexPolygon& b);
+[[nodiscard]] SatResult2 collideObbPolygon(const Obb2& a, PolygonView b);
 
 }  // namespace cardemo

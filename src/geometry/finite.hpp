@@ -29,7 +29,7 @@ inline constexpr double kMaxCoordinate = 1e300;
 }
 
 /// True when every vertex is finite and within kMaxCoordinate.
-[[nodiscard]] inline bool inDomain(const ConvexPolygon& p) {
+[[nodiscard]] inline bool inDomain(PolygonView p) {
   double largest = 0.0;
   for (int i = 0; i < p.count; ++i) largest = std::max(largest, p.vertex(i).cwiseAbs().maxCoeff());
   return p.count >= 3 && p.count <= ConvexPolygon::kMaxVertices && largest <= kMaxCoordinate;

@@ -3,16 +3,20 @@
 // Each candidate axis is an unnormalised edge normal (the edge vector turned a quarter turn) or a
 // box axis, so on inputs whose products are exact (a grid) every gap is exact too. Two axes are
 // measured at a time (simd::Double2), the axes are ordered without a root or a division by their
-// length per axis, and only the winner is normalised.
+// length per axis, and only the winner is normalised. Two quadrilaterals (boxes as polygons, the
+// commonest pair) take four axes a step where the CPU has AVX2 (sat_quads_avx2.cpp), bit for bit
+// the same answer.
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
 
+#include "geometry/batch_path.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/double2.hpp"
 #include "geometry/finite.hpp"
+#include "geometry/sat_quads.hpp"
 
 namespace cardemo {
 namespace {
@@ -65,7 +69,7 @@ void finish(Shape& s) {
 
 // kCount > 0: the polygon's vertex count, known at compile time (the loop unrolls).
 template <int kCount>
-void fillPolygon(const ConvexPolygon& p, const Eigen::Vector2d& ref, Shape& s) {
+void fillPolygon(PolygonView p, const Eigen::Vector2d& ref, Shape& s) {
   const int count = kCount > 0 ? kCount : p.count;
   const Double2 r = simd::load(ref.data());
   const Double2 first = simd::load(p.vertex(0).data());
@@ -96,7 +100,7 @@ void fillPolygon(const ConvexPolygon& p, const Eigen::Vector2d& ref, Shape& s) {
   s.is_polygon = true;
 }
 
-Shape polygonShape(const ConvexPolygon& p, const Eigen::Vector2d& ref) {
+Shape polygonShape(PolygonView p, const Eigen::Vector2d& ref) {
   Shape s;
   if (p.count == 4) {
     fillPolygon<4>(p, ref, s);
@@ -275,8 +279,8 @@ SatResult2 winner(const Shape& a, const Shape& b, const Measured& m) {
 
 // Coordinates below 2^100 and squared axis lengths above 2^-200 keep every product and key of
 // measureAxes between 2^-1000 and 2^+620: no overflow, and no underflow that could matter.
-constexpr double kLargestFastCoordinate = 0x1p100;
-constexpr double kSmallestFastLength2 = 0x1p-200;
+using sat_detail::kLargestFastCoordinate;
+using sat_detail::kSmallestFastLength2;
 
 // `s` with its points scaled by 2^-k and each axis scaled to unit order on its own (zero axes stay
 // zero), the points repeated and the axes padded as before.
@@ -343,7 +347,7 @@ SatResult2 collide(const Shape& a, const Shape& b) {
 // normal q against A, with the operations of measureAxes in its order (same answer bit for bit).
 // False, with nothing written, when the pair is outside the fast path's range.
 template <int kN>
-bool collideEqualCounts(const ConvexPolygon& a, const ConvexPolygon& b, SatResult2& r) {
+bool widestGapOfEqualCounts(PolygonView a, PolygonView b, sat_detail::AxisGaps& out) {
   const Double2 ref = simd::load(a.vertex(0).data());
   // Per vertex i: own = (A's, B's) coordinate, other = (B's, A's); per edge i: its normal.
   Double2 own_x[kN], own_y[kN], other_x[kN], other_y[kN], nx[kN], ny[kN];
@@ -400,23 +404,40 @@ bool collideEqualCounts(const ConvexPolygon& a, const ConvexPolygon& b, SatResul
   int w = 0;
   while (w + 1 < 2 * kN && !(key[w % kN][w / kN] == top)) ++w;
   const int q = w % kN, lane = w / kN;
-  const double f = forward[q][lane], g = backward[q][lane];
-  const double n_x = lane == 0 ? simd::lane0(nx[q]) : simd::lane1(nx[q]);
-  const double n_y = lane == 0 ? simd::lane0(ny[q]) : simd::lane1(ny[q]);
+  out = {forward[q][lane], backward[q][lane], lane == 0 ? simd::lane0(nx[q]) : simd::lane1(nx[q]),
+         lane == 0 ? simd::lane0(ny[q]) : simd::lane1(ny[q])};
+  return true;
+}
+
+// The winning axis normalised, as winner() does it.
+SatResult2 resultOf(const sat_detail::AxisGaps& w) {
+  const double f = w.forward, g = w.backward, n_x = w.axis_x, n_y = w.axis_y;
   const double length = std::sqrt(n_x * n_x + n_y * n_y);
+  SatResult2 r;
   r.separation = (f > g ? f : g) / length;
   r.normal = f >= g ? Eigen::Vector2d(n_x / length, n_y / length)
                     : Eigen::Vector2d(-n_x / length, -n_y / length);
   r.hit = r.separation <= 0.0;
-  return true;
+  return r;
+}
+
+// Two quadrilaterals on the widest path the CPU has (both give the same bits).
+bool widestGapOfQuads(PolygonView a, PolygonView b, sat_detail::AxisGaps& out) {
+#if defined(CARDEMO_BATCH_AVX2)
+  if (batchPath() != BatchPath::kPortable) {
+    return sat_detail::widestGapOfQuadsAvx2(a.vertex(0).data(), b.vertex(0).data(), out);
+  }
+#endif
+  return widestGapOfEqualCounts<4>(a, b, out);
 }
 
 }  // namespace
 
-SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
+SatResult2 collidePolygons(PolygonView a, PolygonView b) {
   assert(inDomain(a) && inDomain(b));
-  SatResult2 r;
-  if (a.count == 4 && b.count == 4 && collideEqualCounts<4>(a, b, r)) {
+  sat_detail::AxisGaps gaps;
+  if (a.count == 4 && b.count == 4 && widestGapOfQuads(a, b, gaps)) {
+    const SatResult2 r = resultOf(gaps);
     assert(isFinite(r));
     return r;
   }
@@ -424,13 +445,13 @@ SatResult2 collidePolygons(const ConvexPolygon& a, const ConvexPolygon& b) {
   return collide(polygonShape(a, ref), polygonShape(b, ref));
 }
 
-SatResult2 collidePolygonObb(const ConvexPolygon& a, const Obb2& b) {
+SatResult2 collidePolygonObb(PolygonView a, const Obb2& b) {
   assert(inDomain(a) && inDomain(b));
   const Eigen::Vector2d& ref = a.vertex(0);
   return collide(polygonShape(a, ref), boxShape(b, ref));
 }
 
-SatResult2 collideObbPolygon(const Obb2& a, const ConvexPolygon& b) {
+SatResult2 collideObbPolygon(const Obb2& a, PolygonView b) {
   assert(inDomain(a) && inDomain(b));
   const Eigen::Vector2d& ref = a.center;
   return collide(boxShape(a, ref), polygonShape(b, ref));

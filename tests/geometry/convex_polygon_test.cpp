@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/batch_paths.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/sat_obb2.hpp"
 #include "random_cases2.hpp"
@@ -196,9 +197,7 @@ Eigen::Vector2d supportVertex(const ConvexPolygon& p, const Eigen::Vector2d& d) 
 
 // B against one of A's edges (or A against one of B's) at a chosen signed gap along its normal;
 // the other shape's nearest vertex lands on that edge, so the gap is usually the SAT separation.
-std::pair<Shape, Shape> nearTouching(Random& rng, const Eigen::Vector2d& base) {
-  Shape a = randomShape(rng, base, 0.1, 20.0, true);
-  Shape b = randomShape(rng, base, 0.1, 20.0, !a.is_box);
+std::pair<Shape, Shape> placedNearTouching(Random& rng, Shape a, Shape b) {
   const ConvexPolygon pa = a.asPolygon(), pb = b.asPolygon();
   const bool along_a = rng.integer(0, 1) == 0;
   const ConvexPolygon& owner = along_a ? pa : pb;
@@ -214,11 +213,40 @@ std::pair<Shape, Shape> nearTouching(Random& rng, const Eigen::Vector2d& base) {
   return {a, b};
 }
 
+std::pair<Shape, Shape> nearTouching(Random& rng, const Eigen::Vector2d& base) {
+  Shape a = randomShape(rng, base, 0.1, 20.0, true);
+  Shape b = randomShape(rng, base, 0.1, 20.0, !a.is_box);
+  return placedNearTouching(rng, a, b);
+}
+
+// A quadrilateral, half the time a box's four corners.
+Shape randomQuadrilateral(Random& rng, const Eigen::Vector2d& center) {
+  Shape s;
+  s.poly = rng.integer(0, 1) == 0 ? ConvexPolygon::fromObb(rng.box(center, 0.1, 20.0))
+                                  : rng.quadrilateral(center, 0.1, 20.0);
+  return s;
+}
+
+// Two quadrilaterals (collidePolygons' own fast path) near touching or a few metres apart, up to
+// 1e7 m from the origin.
+std::pair<Shape, Shape> quadrilateralPair(Random& rng) {
+  const Eigen::Vector2d base = rng.farPoint(1e7);
+  Shape a = randomQuadrilateral(rng, base);
+  if (rng.integer(0, 1) == 0) return placedNearTouching(rng, a, randomQuadrilateral(rng, base));
+  return {a, randomQuadrilateral(rng, base + rng.direction() * rng.uniform(0, 20))};
+}
+
 TEST(ConvexPolygonRandom, GapsOnBothSidesOfTouching) {
   const ClassStats s = runShapeClass(
       2001, [](Random& rng) { return nearTouching(rng, rng.direction() * rng.uniform(0, 100)); });
   EXPECT_GT(s.exact_hits, s.cases / 3);
   EXPECT_LT(s.exact_hits, 2 * s.cases / 3);
+}
+
+TEST(ConvexPolygonRandom, Quadrilaterals) {
+  const ClassStats s = runShapeClass(2006, quadrilateralPair);
+  EXPECT_GT(s.exact_hits, s.cases / 4);
+  EXPECT_LT(s.exact_hits, 3 * s.cases / 4);
 }
 
 TEST(ConvexPolygonRandom, FarFromOrigin) {
@@ -314,6 +342,38 @@ TEST(ConvexPolygonSat, SeparatedTriangles) {
   EXPECT_NEAR(r.separation, std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(r.normal.x(), std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(r.normal.y(), std::sqrt(0.5), 1e-15);
+}
+
+// The quadrilateral fast path has an SSE2 and an AVX2 form: the same bits on every path, also
+// where the fast range ends (huge coordinates, tiny edges) and the general path takes over.
+TEST(ConvexPolygonSat, QuadrilateralsGiveTheSameBitsOnEveryPath) {
+  testing::BatchPathGuard guard;
+  const std::vector<BatchPath> paths = testing::availableBatchPaths();
+  Random rng(2007);
+  for (int i = 0; i < 20000; ++i) {
+    auto [a, b] = quadrilateralPair(rng);
+    if (i % 10 == 1) {  // past kLargestFastCoordinate relative to A's first vertex
+      b.translate(rng.direction() * 0x1p101);
+    } else if (i % 10 == 2) {  // edges below 1e-30 m: squared lengths below kSmallestFastLength2
+      ConvexPolygon tiny = a.poly;
+      for (int k = 0; k < 4; ++k) {
+        tiny.vertices[static_cast<std::size_t>(k)] =
+            a.poly.vertex(0) + (a.poly.vertex(k) - a.poly.vertex(0)) * 1e-32;
+      }
+      a.poly = tiny;
+    }
+    setBatchPath(paths.front());
+    const SatResult2 want = collidePolygons(a.poly, b.poly);
+    for (const BatchPath path : paths) {
+      setBatchPath(path);
+      const SatResult2 got = collidePolygons(a.poly, b.poly);
+      ASSERT_TRUE(got.hit == want.hit && testing::sameBits(got.separation, want.separation) &&
+                  testing::sameBits(got.normal.x(), want.normal.x()) &&
+                  testing::sameBits(got.normal.y(), want.normal.y()))
+          << "pair " << i << " on " << batchPathName(path) << ": " << got.separation << " against "
+          << want.separation;
+    }
+  }
 }
 
 TEST(ConvexPolygonSat, BoxPolygonMatchesBoxBox) {

@@ -75,6 +75,23 @@ class Random {
       if (auto p = ConvexPolygon::fromPoints(points)) return *p;
     }
   }
+  /// Convex quadrilateral on an ellipse (as polygon()), rotated, around `center`.
+  ConvexPolygon quadrilateral(const Eigen::Vector2d& center, double lo, double hi) {
+    for (;;) {
+      double angles[4];
+      for (double& t : angles) t = uniform(0.0, 2.0 * std::numbers::pi);
+      std::sort(std::begin(angles), std::end(angles));
+      const double rx = 0.5 * logUniform(lo, hi), ry = 0.5 * logUniform(lo, hi);
+      const Eigen::Vector2d u = direction();
+      std::vector<Eigen::Vector2d> points;
+      for (double t : angles) {
+        const Eigen::Vector2d e{rx * std::cos(t), ry * std::sin(t)};
+        points.push_back(
+            center + Eigen::Vector2d(u.x() * e.x() - u.y() * e.y(), u.y() * e.x() + u.x() * e.y()));
+      }
+      if (auto p = ConvexPolygon::fromPoints(points)) return *p;
+    }
+  }
   /// Underlying engine.
   std::mt19937_64& engine() { return rng_; }
 
