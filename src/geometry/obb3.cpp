@@ -11,7 +11,9 @@
 #include <emmintrin.h>
 #endif
 
+#include "geometry/batch_path.hpp"
 #include "geometry/finite.hpp"
+#include "geometry/obb3_lanes.hpp"
 
 namespace cardemo {
 
@@ -137,6 +139,8 @@ struct Pose3 {
   V3 face_a;          // gaps on A's faces
   double face_b[3];   // gaps on B's faces
   [[nodiscard]] double r(int k, int j) const { return lane(col[j], k); }
+  [[nodiscard]] double tk(int k) const { return lane(t, k); }
+  [[nodiscard]] double tbk(int j) const { return tb[j]; }
   [[nodiscard]] double face(int k) const { return k < 3 ? lane(face_a, k) : face_b[k - 3]; }
 };
 
@@ -199,14 +203,15 @@ struct EdgeFilter {
   double min_length2;  // floor on the squared axis length for a normalised fast gap
 };
 
-[[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b, const Pose3& p) {
+[[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b,
+                                                    const Eigen::Vector3d& d) {
   constexpr double kU = 0x1p-53;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const double phi = std::max(a.frameDefect(), b.frameDefect());
   if (!(phi <= 0x1p-30)) return {kInf, kInf};
   // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
   const double scale =
-      std::abs(p.d.x()) + std::abs(p.d.y()) + std::abs(p.d.z()) + a.half.sum() + b.half.sum();
+      std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) + a.half.sum() + b.half.sum();
   const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
   return {(32.0 * kU + 6.0 * phi) * scale, root * root};
 }
@@ -244,11 +249,13 @@ struct FastEdges {
   return out;
 }
 
-// The world-frame unit axis of fast edge (i, j), pointing from A towards B.
-Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose3& p, int i, int j) {
+// The world-frame unit axis of fast edge (i, j), pointing from A towards B. Pose: a Pose3 or
+// PoseScalars.
+template <class Pose>
+Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int i, int j) {
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
   const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
-  const double along = lane(p.t, i2) * p.r(i1, j) - lane(p.t, i1) * p.r(i2, j);
+  const double along = p.tk(i2) * p.r(i1, j) - p.tk(i1) * p.r(i2, j);
   return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
 }
 
@@ -308,10 +315,59 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   best_index = larger ? index : best_index;
 }
 
+// Single entries of Pose3 computed on demand, bit for bit as relativePose forms them (lane k of
+// t and of col[j] is dot3 of A's column k with d and b_j).
+struct PoseScalars {
+  const Obb3& a;
+  const Obb3& b;
+  Eigen::Vector3d d;
+  [[nodiscard]] double r(int k, int j) const {
+    return dot3(a.rotation().data() + 3 * k, b.rotation().data() + 3 * j);
+  }
+  [[nodiscard]] double tk(int k) const { return dot3(a.rotation().data() + 3 * k, d.data()); }
+  [[nodiscard]] double tbk(int j) const { return dot3(b.rotation().data() + 3 * j, d.data()); }
+};
+
+// The normal of the winning axis, pointing from A towards B: a fast edge axis, or a stored column
+// whose sign the pose's t (A's faces) or tb (B's faces) gives.
+template <class Pose>
+Eigen::Vector3d winningNormal(const Obb3& a, const Obb3& b, const Pose& p, int axis) {
+  if (axis >= 6) return fastEdgeNormal(a, p, (axis - 6) / 3, (axis - 6) % 3);
+  if (axis < 3) {
+    const Eigen::Vector3d n = a.rotation().col(axis);
+    return p.tk(axis) < 0.0 ? Eigen::Vector3d(-n) : n;
+  }
+  const Eigen::Vector3d n = b.rotation().col(axis - 3);
+  return p.tbk(axis - 3) < 0.0 ? Eigen::Vector3d(-n) : n;
+}
+
+#if defined(CARDEMO_BATCH_AVX2)
+obb3_detail::BoxNumbers numbersOf(const Obb3& box) {
+  return {box.center.data(), box.half.data(), box.rotation().data()};
+}
+#endif
+
 }  // namespace
 
 SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
+#if defined(CARDEMO_BATCH_AVX2)
+  if (batchPath() != BatchPath::kPortable) {
+    const PoseScalars pose{a, b, b.center - a.center};
+    const EdgeFilter filter = edgeFilter(a, b, pose.d);
+    obb3_detail::LargestGap largest;
+    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), filter.bound, filter.min_length2,
+                                    largest)) {
+      SatResult3 r;
+      r.separation = largest.gap;
+      r.axis_index = largest.axis;
+      r.normal = winningNormal(a, b, pose, largest.axis);
+      r.hit = r.separation <= 0.0;
+      assert(isFinite(r));
+      return r;
+    }
+  }
+#endif
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
   double best = p.face_a.lo[0];
@@ -323,7 +379,7 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     pickLargest(p.face_b[j], 3 + j, best, best_index);
   });
   const FastEdges fast = fastEdges(a, b, p);
-  const EdgeFilter filter = edgeFilter(a, b, p);
+  const EdgeFilter filter = edgeFilter(a, b, p.d);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
   // candidates are the fast ones; they are normalised together and compared without branches.
   const V2 bound{filter.bound, filter.bound};
@@ -392,14 +448,8 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
       return r;
     }
   }
-  // A face axis wins: the stored column, pointing from A towards B.
-  if (r.axis_index < 3) {
-    r.normal = a.rotation().col(r.axis_index);
-    if (lane(p.t, r.axis_index) < 0.0) r.normal = -r.normal;
-  } else {
-    r.normal = b.rotation().col(r.axis_index - 3);
-    if (p.tb[r.axis_index - 3] < 0.0) r.normal = -r.normal;
-  }
+  // A face axis wins.
+  r.normal = winningNormal(a, b, p, r.axis_index);
   r.hit = r.separation <= 0.0;
   assert(isFinite(r));
   return r;
@@ -407,6 +457,17 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
 
 bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
+#if defined(CARDEMO_BATCH_AVX2)
+  if (batchPath() != BatchPath::kPortable) {
+    obb3_detail::OverlapGaps gaps;
+    obb3_detail::overlapGapsAvx2(numbersOf(a), numbersOf(b), gaps);
+    if (gaps.face > 0.0) return false;
+    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
+    if (gaps.edge > filter.bound) return false;
+    if (gaps.edge < -filter.bound) return true;
+    // Some edge gap lies within the bound: the SSE2 path below decides it axis by axis.
+  }
+#endif
   const Pose3 p = relativePose(a, b);
   const double face = std::max(
       {p.face_a.lo[0], p.face_a.lo[1], p.face_a.hi[0], p.face_b[0], p.face_b[1], p.face_b[2]});
@@ -415,7 +476,7 @@ bool overlapObb3(const Obb3& a, const Obb3& b) {
   const V2 lo = max2(max2(fast.gap[0].lo, fast.gap[1].lo), fast.gap[2].lo);
   const V2 hi = max2(max2(fast.gap[0].hi, fast.gap[1].hi), fast.gap[2].hi);
   const double largest = std::max({lo[0], lo[1], hi[0]});
-  const EdgeFilter filter = edgeFilter(a, b, p);
+  const EdgeFilter filter = edgeFilter(a, b, p.d);
   if (largest > filter.bound) return false;
   if (largest < -filter.bound) return true;
   for (int e = 0; e < 9; ++e) {

@@ -1,0 +1,158 @@
+// overlapObb3's and collideObb3's common case with AVX2: each 3-vector of obb3.cpp's SSE2 form
+// (two registers there) is one register here, lane 3 unused. Lane k does the operations of the
+// scalar formula it stands for, in obb3.cpp's order, so every gap is the same bit for bit. Built
+// with -mavx2 -mfma (CMakeLists.txt; -ffp-contract=off keeps every product rounded on its own) and
+// called only after geometry/batch_path says the CPU has AVX2.
+//
+// Includes nothing but the intrinsics and its header, for the reason given in
+// kernels/batch_avx2.cpp.
+
+#if defined(CARDEMO_BATCH_AVX2)
+#if !defined(__AVX2__)
+#error "obb3_avx2.cpp needs -mavx2 (set in CMakeLists.txt)"
+#endif
+
+#include <immintrin.h>
+
+#include "geometry/obb3_lanes.hpp"
+
+namespace cardemo::obb3_detail {
+namespace {
+
+// Lane k of next1(u) is lane k + 1 (mod 3) of u, of next2(u) lane k + 2; lane 3 stays.
+inline __m256d next1(__m256d u) {
+  return _mm256_permute4x64_pd(u, 0b11001001);
+}
+inline __m256d next2(__m256d u) {
+  return _mm256_permute4x64_pd(u, 0b11010010);
+}
+inline __m256d abs4(__m256d u) {
+  return _mm256_andnot_pd(_mm256_set1_pd(-0.0), u);
+}
+inline __m256d splat(double x) {
+  return _mm256_set1_pd(x);
+}
+// (x, y, z, 0).
+inline __m256d gather(double x, double y, double z) {
+  return _mm256_set_pd(0.0, z, y, x);
+}
+// Lane 3 set to -infinity, so that it never wins a maximum.
+inline __m256d withoutPadding(__m256d u) {
+  return _mm256_blend_pd(u, splat(-__builtin_inf()), 0b1000);
+}
+double largestLane(__m256d v) {
+  const __m128d half = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
+  return _mm_cvtsd_f64(_mm_max_pd(half, _mm_unpackhi_pd(half, half)));
+}
+
+// obb3.cpp's Pose3 and FastEdges, as registers: lane k of t is a_k . d, lane k of col[j] is
+// r_kj = a_k . b_j; lane j of face_b is the gap on B's face j.
+struct Lanes {
+  __m256d t, col[3], abscol[3], face_a, face_b;
+  __m256d gap[3], length2[3];
+};
+
+Lanes poseAndFaces(const BoxNumbers& a, const BoxNumbers& b) {
+  Lanes p;
+  const double* ra = a.rotation;
+  const double* rb = b.rotation;
+  const double* hb = b.half;
+  const double dx = b.center[0] - a.center[0], dy = b.center[1] - a.center[1],
+               dz = b.center[2] - a.center[2];
+  const __m256d ax = gather(ra[0], ra[3], ra[6]), ay = gather(ra[1], ra[4], ra[7]),
+                az = gather(ra[2], ra[5], ra[8]);
+  const __m256d bx = gather(rb[0], rb[3], rb[6]), by = gather(rb[1], rb[4], rb[7]),
+                bz = gather(rb[2], rb[5], rb[8]);
+  const __m256d ha = gather(a.half[0], a.half[1], a.half[2]);
+  const __m256d vdx = splat(dx), vdy = splat(dy), vdz = splat(dz);
+  const auto dotColumns = [](__m256d x, __m256d y, __m256d z, __m256d u, __m256d v, __m256d w) {
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(x, u), _mm256_mul_pd(y, v)),
+                         _mm256_mul_pd(z, w));
+  };
+  p.t = dotColumns(ax, ay, az, vdx, vdy, vdz);
+  const __m256d tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
+  for (int j = 0; j < 3; ++j) {
+    p.col[j] = dotColumns(ax, ay, az, splat(rb[3 * j]), splat(rb[3 * j + 1]), splat(rb[3 * j + 2]));
+    p.abscol[j] = abs4(p.col[j]);
+  }
+  const __m256d radius_b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(p.abscol[0], splat(hb[0])),
+                                                       _mm256_mul_pd(p.abscol[1], splat(hb[1]))),
+                                         _mm256_mul_pd(p.abscol[2], splat(hb[2])));
+  p.face_a = _mm256_sub_pd(_mm256_sub_pd(abs4(p.t), ha), radius_b);
+  // B's face j: A's radius sum_k |r_kj| ha_k over lanes k of col[j], here lane j of a sum over
+  // the rows of R (row k, lane j: r_kj, formed in col's order with the factors swapped).
+  __m256d row_abs[3];
+  for (int k = 0; k < 3; ++k) {
+    row_abs[k] =
+        abs4(dotColumns(bx, by, bz, splat(ra[3 * k]), splat(ra[3 * k + 1]), splat(ra[3 * k + 2])));
+  }
+  const __m256d radius_a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(row_abs[0], splat(a.half[0])),
+                                                       _mm256_mul_pd(row_abs[1], splat(a.half[1]))),
+                                         _mm256_mul_pd(row_abs[2], splat(a.half[2])));
+  p.face_b = _mm256_sub_pd(_mm256_sub_pd(abs4(tb), gather(hb[0], hb[1], hb[2])), radius_a);
+  return p;
+}
+
+// obb3.cpp's fastEdges, column j of R per register.
+void fastEdges(const BoxNumbers& a, const BoxNumbers& b, Lanes& p) {
+  const __m256d ha = gather(a.half[0], a.half[1], a.half[2]);
+  const __m256d t1 = next1(p.t), t2 = next2(p.t);
+  const __m256d ha1 = next1(ha), ha2 = next2(ha);
+  const double* hb = b.half;
+  for (int j = 0; j < 3; ++j) {
+    const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    const __m256d r1 = next1(p.col[j]), r2 = next2(p.col[j]);
+    const __m256d along = _mm256_sub_pd(_mm256_mul_pd(t2, r1), _mm256_mul_pd(t1, r2));
+    const __m256d ra = _mm256_add_pd(_mm256_mul_pd(ha1, abs4(r2)), _mm256_mul_pd(ha2, abs4(r1)));
+    const __m256d rb = _mm256_add_pd(_mm256_mul_pd(p.abscol[j2], splat(hb[j1])),
+                                     _mm256_mul_pd(p.abscol[j1], splat(hb[j2])));
+    p.gap[j] = _mm256_sub_pd(_mm256_sub_pd(abs4(along), ra), rb);
+    p.length2[j] = _mm256_add_pd(_mm256_mul_pd(r1, r1), _mm256_mul_pd(r2, r2));
+  }
+}
+
+}  // namespace
+
+void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out) {
+  Lanes p = poseAndFaces(a, b);
+  out.face = largestLane(_mm256_max_pd(withoutPadding(p.face_a), withoutPadding(p.face_b)));
+  if (out.face > 0.0) return;
+  fastEdges(a, b, p);
+  out.edge =
+      largestLane(withoutPadding(_mm256_max_pd(_mm256_max_pd(p.gap[0], p.gap[1]), p.gap[2])));
+}
+
+bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
+                    LargestGap& out) {
+  Lanes p = poseAndFaces(a, b);
+  fastEdges(a, b, p);
+  const __m256d vbound = splat(bound), vmin_length2 = splat(min_length2);
+  __m256d sure = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  for (int j = 0; j < 3; ++j) {
+    sure = _mm256_and_pd(sure, _mm256_cmp_pd(abs4(p.gap[j]), vbound, _CMP_GT_OQ));
+    sure = _mm256_and_pd(sure, _mm256_cmp_pd(p.length2[j], vmin_length2, _CMP_GT_OQ));
+  }
+  if ((_mm256_movemask_pd(sure) & 0b0111) != 0b0111) return false;
+  alignas(32) double faces[2][4], g[3][4];
+  _mm256_store_pd(faces[0], p.face_a);
+  _mm256_store_pd(faces[1], p.face_b);
+  for (int j = 0; j < 3; ++j) {
+    _mm256_store_pd(g[j], _mm256_div_pd(p.gap[j], _mm256_sqrt_pd(p.length2[j])));
+  }
+  // The first largest, faces then edges 3i + j, as obb3.cpp's pickLargest chain.
+  double best = faces[0][0];
+  int best_axis = 0;
+  const auto pick = [&best, &best_axis](double gap, int axis) {
+    const bool larger = gap > best;
+    best = larger ? gap : best;
+    best_axis = larger ? axis : best_axis;
+  };
+  for (int k = 1; k < 6; ++k) pick(faces[k / 3][k % 3], k);
+  for (int e = 0; e < 9; ++e) pick(g[e % 3][e / 3], 6 + e);
+  out = {best, best_axis};
+  return true;
+}
+
+}  // namespace cardemo::obb3_detail
+
+#endif
