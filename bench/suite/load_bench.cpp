@@ -50,7 +50,7 @@ void registerLoadSize(std::size_t n) {
                                      return;
                                    }
                                    const World world(std::move(scene).value());
-                                   benchmark::DoNotOptimize(world.colliders().data());
+                                   benchmark::DoNotOptimize(world.colliders().bounds().data());
                                  }
                                  s.counters["cars"] = static_cast<double>(n);
                                })
@@ -69,7 +69,7 @@ void registerLoadSize(std::size_t n) {
                                  const Scene scene = lotScene(n);
                                  for (auto _ : s) {
                                    const World world(scene);
-                                   benchmark::DoNotOptimize(world.colliders().data());
+                                   benchmark::DoNotOptimize(world.colliders().bounds().data());
                                  }
                                })
       ->Unit(benchmark::kMillisecond);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 #include "geometry/sat_obb2.hpp"
 #include "geometry/sweep_obb2.hpp"
@@ -10,29 +9,30 @@
 
 namespace cardemo {
 
+SatResult2 collidePlayer(const Obb2& player, const Obb2& box) {
+  return collideObb2(player, box);
+}
+
+SatResult2 collidePlayer(const Obb2& player, const ConvexPolygon& polygon) {
+  return collideObbPolygon(player, polygon);
+}
+
 SatResult2 collidePlayer(const Obb2& player, const StaticShape& shape) {
-  return std::visit(
-      [&player](const auto& s) -> SatResult2 {
-        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Obb2>) {
-          return collideObb2(player, s);
-        } else {
-          return collideObbPolygon(player, s);
-        }
-      },
-      shape);
+  return std::visit([&player](const auto& s) { return collidePlayer(player, s); }, shape);
+}
+
+SweepResult2 sweepPlayer(const Obb2& player, const Eigen::Vector2d& displacement, const Obb2& box) {
+  return sweepObb2(player, displacement, box);
+}
+
+SweepResult2 sweepPlayer(const Obb2& player, const Eigen::Vector2d& displacement,
+                         const ConvexPolygon& polygon) {
+  return sweepObbPolygon(player, displacement, polygon);
 }
 
 SweepResult2 sweepPlayer(const Obb2& player, const Eigen::Vector2d& displacement,
                          const StaticShape& shape) {
-  return std::visit(
-      [&](const auto& s) -> SweepResult2 {
-        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Obb2>) {
-          return sweepObb2(player, displacement, s);
-        } else {
-          return sweepObbPolygon(player, displacement, s);
-        }
-      },
-      shape);
+  return std::visit([&](const auto& s) { return sweepPlayer(player, displacement, s); }, shape);
 }
 
 namespace {
@@ -44,29 +44,44 @@ double radiusAlong(const Obb2& box, const Eigen::Vector2d& axis) {
          std::abs(perp.x() * axis.x() + perp.y() * axis.y()) * box.half.y();
 }
 
+// The far end of the player's box along the axis, where the gap to a shape starts.
+double playerMaxAlong(const Obb2& player, const Eigen::Vector2d& axis) {
+  return player.center.x() * axis.x() + player.center.y() * axis.y() + radiusAlong(player, axis);
+}
+
 }  // namespace
 
+double separationAlong(const Obb2& player, const Obb2& box, const Eigen::Vector2d& axis) {
+  const double player_max = playerMaxAlong(player, axis);
+  const double box_min =
+      box.center.x() * axis.x() + box.center.y() * axis.y() - radiusAlong(box, axis);
+  return box_min - player_max;
+}
+
+double separationAlong(const Obb2& player, const ConvexPolygon& polygon,
+                       const Eigen::Vector2d& axis) {
+  const double player_max = playerMaxAlong(player, axis);
+  double lowest = polygon.vertex(0).x() * axis.x() + polygon.vertex(0).y() * axis.y();
+  for (int i = 1; i < polygon.count; ++i) {
+    lowest = std::min(lowest, polygon.vertex(i).x() * axis.x() + polygon.vertex(i).y() * axis.y());
+  }
+  return lowest - player_max;
+}
+
 double separationAlong(const Obb2& player, const StaticShape& shape, const Eigen::Vector2d& axis) {
-  const double player_max =
-      player.center.x() * axis.x() + player.center.y() * axis.y() + radiusAlong(player, axis);
-  const double shape_min = std::visit(
-      [&axis](const auto& s) -> double {
-        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Obb2>) {
-          return s.center.x() * axis.x() + s.center.y() * axis.y() - radiusAlong(s, axis);
-        } else {
-          double lowest = s.vertex(0).x() * axis.x() + s.vertex(0).y() * axis.y();
-          for (int i = 1; i < s.count; ++i) {
-            lowest = std::min(lowest, s.vertex(i).x() * axis.x() + s.vertex(i).y() * axis.y());
-          }
-          return lowest;
-        }
-      },
-      shape);
-  return shape_min - player_max;
+  return std::visit([&](const auto& s) { return separationAlong(player, s, axis); }, shape);
+}
+
+Aabb2 boundsOf(const Obb2& box) {
+  return box.aabb();
+}
+
+Aabb2 boundsOf(const ConvexPolygon& polygon) {
+  return polygon.aabb();
 }
 
 Aabb2 boundsOf(const StaticShape& shape) {
-  return std::visit([](const auto& s) { return s.aabb(); }, shape);
+  return std::visit([](const auto& s) { return boundsOf(s); }, shape);
 }
 
 }  // namespace cardemo

@@ -20,13 +20,13 @@ double aabbDistance(const Aabb2& a, const Aabb2& b) {
 FrameComparer::FrameComparer(const World& world, const CompareOptions& options)
     : options_(options) {
   report_.radius = options.radius;
-  const std::vector<StaticShape>& colliders = world.colliders();
+  const StaticColliders& colliders = world.colliders();
   shapes_.reserve(colliders.size());
   bounds_.reserve(colliders.size());
   report_.ids.reserve(colliders.size());
   for (std::uint32_t i = 0; i < colliders.size(); ++i) {
-    shapes_.push_back(box2dShapesOf(colliders[i]));
-    bounds_.push_back(boundsOf(colliders[i]));
+    shapes_.push_back(box2dShapesOf(colliders.shape(i)));
+    bounds_.push_back(colliders.bounds(i));
     report_.ids.push_back(world.colliderId(i));
   }
   for (auto& last : last_true_) last.assign(colliders.size(), -2);
@@ -39,11 +39,12 @@ void FrameComparer::check(const World& world) {
   setBox2dPose(player_.bare, player);
   setBox2dPose(player_.skin, player);
   const Aabb2 player_bounds = player.aabb();
-  const std::vector<StaticShape>& colliders = world.colliders();
+  const StaticColliders& colliders = world.colliders();
   report_.frames = world.frame();
   for (std::uint32_t i = 0; i < colliders.size(); ++i) {
     if (options_.radius && aabbDistance(player_bounds, bounds_[i]) > *options_.radius) continue;
-    const PairVerdicts v = judgePair(player, player_, colliders[i], shapes_[i], options_.all_exact);
+    const PairVerdicts v =
+        judgePair(player, player_, colliders.shape(i), shapes_[i], options_.all_exact);
     record(world.frame(), i, v);
   }
 }

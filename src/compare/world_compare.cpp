@@ -143,7 +143,7 @@ Parsed<WorldComparison> compareWorld(const std::string& replay_path,
   b2.SetContactListener(&listener);
   std::vector<b2Body*> statics;
   for (std::uint32_t i = 0; i < world.colliders().size(); ++i)
-    statics.push_back(addStatic(b2, world.colliders()[i], i));
+    statics.push_back(addStatic(b2, world.colliders().shape(i), i));
   out.touching_static_pairs = touchingStaticPairs(statics);
   b2Body* player = addPlayer(b2, world.carBox());
   std::vector<std::optional<double>> min_gap(statics.size());

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "render/hud.hpp"
@@ -13,19 +12,26 @@
 namespace cardemo {
 namespace {
 
-// Outline points of a static shape in pixels; returns how many are used.
-int shapePoints(const Camera& camera, const StaticShape& shape,
+// Outline points of a box or polygon in pixels; returns how many are used.
+int shapePoints(const Camera& camera, const Obb2& box,
                 std::array<Eigen::Vector2f, ConvexPolygon::kMaxVertices>& out) {
-  if (const auto* box = std::get_if<Obb2>(&shape)) {
-    const auto c = projectObb(camera, *box);
-    std::copy(c.begin(), c.end(), out.begin());
-    return 4;
-  }
-  const auto& poly = std::get<ConvexPolygon>(shape);
+  const auto c = projectObb(camera, box);
+  std::copy(c.begin(), c.end(), out.begin());
+  return 4;
+}
+
+int shapePoints(const Camera& camera, const ConvexPolygon& poly,
+                std::array<Eigen::Vector2f, ConvexPolygon::kMaxVertices>& out) {
   for (int i = 0; i < poly.count; ++i) {
     out[static_cast<std::size_t>(i)] = camera.toScreen(poly.vertex(i));
   }
   return poly.count;
+}
+
+// Outline points of collider i in pixels; returns how many are used.
+int colliderPoints(const Camera& camera, const StaticColliders& colliders, std::uint32_t i,
+                   std::array<Eigen::Vector2f, ConvexPolygon::kMaxVertices>& out) {
+  return colliders.visit(i, [&](const auto& shape) { return shapePoints(camera, shape, out); });
 }
 
 // Support distance of the box along unit direction n (half its width along n).
@@ -76,17 +82,18 @@ void drawDebugOverlay(Canvas& canvas, const World& world, const Camera& camera,
 
   Rgba candidate_fill = palette.candidate;
   candidate_fill.a = 70;
+  const StaticColliders& colliders = world.colliders();
   for (std::uint32_t i : world.candidates()) {
-    if (i >= world.colliders().size()) continue;
-    canvas.fillConvex(span(shapePoints(camera, world.colliders()[i], pts)), candidate_fill);
+    if (i >= colliders.size()) continue;
+    canvas.fillConvex(span(colliderPoints(camera, colliders, i, pts)), candidate_fill);
   }
-  for (const StaticShape& shape : world.colliders()) {
-    if (!boundsOf(shape).overlaps(view)) continue;
-    outline(canvas, span(shapePoints(camera, shape, pts)), 1.5f, palette.obb);
+  for (std::uint32_t i = 0; i < colliders.size(); ++i) {
+    if (!colliders.bounds(i).overlaps(view)) continue;
+    outline(canvas, span(colliderPoints(camera, colliders, i, pts)), 1.5f, palette.obb);
   }
   for (std::uint32_t i : world.candidates()) {
-    if (i >= world.colliders().size()) continue;
-    outline(canvas, span(shapePoints(camera, world.colliders()[i], pts)), 3.0f, palette.candidate);
+    if (i >= colliders.size()) continue;
+    outline(canvas, span(colliderPoints(camera, colliders, i, pts)), 3.0f, palette.candidate);
   }
 
   const Obb2 player = world.carBox();

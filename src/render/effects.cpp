@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <variant>
 
 namespace cardemo {
 namespace {
@@ -152,10 +151,10 @@ void Effects::takeHit(const World& world, const HitEvent& hit) {
   for (const ActiveContact& c : world.contacts()) {
     if (c.collider == hit.collider) n = c.normal;
   }
-  const StaticShape* shape =
-      hit.collider < world.colliders().size() ? &world.colliders()[hit.collider] : nullptr;
-  if (n.isZero() && shape != nullptr) {
-    const Aabb2 b = boundsOf(*shape);
+  const StaticColliders& colliders = world.colliders();
+  const bool known = hit.collider < colliders.size();
+  if (n.isZero() && known) {
+    const Aabb2& b = colliders.bounds(hit.collider);
     const Eigen::Vector2d d = 0.5 * (b.min + b.max) - player.center;
     if (d.norm() > 1e-9) n = d.normalized();
   }
@@ -174,10 +173,9 @@ void Effects::takeHit(const World& world, const HitEvent& hit) {
     dents_.push_back(d);
   };
   addDent({kPlayerDent, onBoundary(player, at), radius, seed});
-  if (shape != nullptr) {
-    if (const auto* box = std::get_if<Obb2>(shape)) {
-      addDent({hit.collider, onBoundary(*box, at), radius, seed ^ 0x5bd1e995u});
-    }
+  if (known && colliders.isBox(hit.collider)) {
+    addDent(
+        {hit.collider, onBoundary(colliders.box(hit.collider), at), radius, seed ^ 0x5bd1e995u});
   }
 }
 

@@ -18,19 +18,14 @@ constexpr double kNoContact = 2.0;
 // Damage points (speed x damage_per_mps) this close above an integer still round down to it.
 constexpr double kDamageRounding = 1e-9;
 
-std::vector<StaticShape> collidersOf(const Scene& scene) {
-  std::vector<StaticShape> out;
-  out.reserve(scene.parked.size() + scene.obstacles.size());
-  for (const ParkedCar& p : scene.parked) out.emplace_back(p.box);
-  for (const Obstacle& o : scene.obstacles) out.emplace_back(o.polygon);
-  return out;
-}
-
-std::vector<Aabb2> boundsOfAll(const std::vector<StaticShape>& shapes) {
-  std::vector<Aabb2> out;
-  out.reserve(shapes.size());
-  for (const StaticShape& s : shapes) out.push_back(boundsOf(s));
-  return out;
+StaticColliders collidersOf(const Scene& scene) {
+  std::vector<Obb2> boxes;
+  boxes.reserve(scene.parked.size());
+  for (const ParkedCar& p : scene.parked) boxes.push_back(p.box);
+  std::vector<ConvexPolygon> polygons;
+  polygons.reserve(scene.obstacles.size());
+  for (const Obstacle& o : scene.obstacles) polygons.push_back(o.polygon);
+  return {std::move(boxes), std::move(polygons)};
 }
 
 CarParams paramsFor(const WorldSettings& settings, const PlayerStart& player) {
@@ -73,8 +68,7 @@ World::World(Scene scene, const WorldSettings& settings)
       settings_(settings),
       params_(paramsFor(settings, scene_.player)),
       colliders_(collidersOf(scene_)),
-      collider_bounds_(boundsOfAll(colliders_)),
-      grid_(collider_bounds_),
+      grid_(colliders_.bounds()),
       health_(scene_.player.health),
       touching_(colliders_.size(), 0),
       crash_until_(colliders_.size(), -1),
@@ -143,7 +137,7 @@ void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
   detected_bounds_ = bounds;
   for (const std::uint32_t id : candidates_) {
     ++stats_.narrowphase_tests;
-    SatResult2 r = collidePlayer(box, colliders_[id]);
+    SatResult2 r = colliders_.visit(id, [&box](const auto& s) { return collidePlayer(box, s); });
     if (r.separation <= 0.0) {
       if (touching_[id] == 0 && !previous_contacts_.empty()) smoothSeam(box, id, r);
       detected_.push_back({id, r.normal, r.separation});
@@ -161,7 +155,8 @@ void World::smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const {
   // idea of Box2D's ghost vertices on chain shapes: Catto, "Ghost Vertices", box2d.org, 2020).
   for (const ActiveContact& support : previous_contacts_) {
     if (support.collider == id) continue;
-    const double along = separationAlong(box, colliders_[id], support.normal);
+    const double along = colliders_.visit(
+        id, [&](const auto& s) { return separationAlong(box, s, support.normal); });
     // SAT's separation is the largest over every axis, so `along` is at most r.separation.
     if (-along <= settings_.seam_depth) {
       r.normal = support.normal;
@@ -245,7 +240,8 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
   first_toi_ = kNoContact;
   for (const std::uint32_t id : candidates_) {
     ++stats_.sweeps;
-    const SweepResult2 r = sweepPlayer(box, displacement, colliders_[id]);
+    const SweepResult2 r =
+        colliders_.visit(id, [&](const auto& s) { return sweepPlayer(box, displacement, s); });
     if (!r.hit) continue;
     const double closing = r.normal.x() * displacement.x() + r.normal.y() * displacement.y();
     double t = 0.0;
@@ -343,7 +339,7 @@ void World::detectWithinSweep(const Obb2& box) {
   // query: exactly what a fresh query returns (same test, same order), without running one.
   std::size_t kept = 0;
   for (const std::uint32_t id : candidates_) {
-    if (collider_bounds_[id].overlaps(query)) candidates_[kept++] = id;
+    if (colliders_.bounds(id).overlaps(query)) candidates_[kept++] = id;
   }
   candidates_.resize(kept);
   last_query_box_ = query;

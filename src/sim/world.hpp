@@ -7,6 +7,7 @@
 
 #include "collision/broad_phase.hpp"
 #include "collision/narrow_phase.hpp"
+#include "collision/static_colliders.hpp"
 #include "sim/car.hpp"
 #include "sim/input_frame.hpp"
 #include "sim/scene.hpp"
@@ -120,7 +121,7 @@ class World {
   /// Settings in force.
   [[nodiscard]] const WorldSettings& settings() const { return settings_; }
   /// Static colliders: parked cars (as Obb2) then obstacles, in scene order.
-  [[nodiscard]] const std::vector<StaticShape>& colliders() const { return colliders_; }
+  [[nodiscard]] const StaticColliders& colliders() const { return colliders_; }
   /// The id of collider i.
   [[nodiscard]] const std::string& colliderId(std::uint32_t i) const;
   /// 64-bit FNV-1a over the exact bits of the state, field by field (see docs/formats.md).
@@ -130,8 +131,7 @@ class World {
   Scene scene_;
   WorldSettings settings_;
   CarParams params_;
-  std::vector<StaticShape> colliders_;
-  std::vector<Aabb2> collider_bounds_;  // tight bounds of colliders_[i]
+  StaticColliders colliders_;
   UniformGrid grid_;
   CarState car_;
   int health_ = 100;

@@ -66,7 +66,7 @@ std::string driveInto(const Target& target, double heading_deg, double speed, do
   for (int f = 0; f < frames; ++f) {
     world.step(input);
     const double side = (world.car().position - offset - target.centre).dot(target.normal);
-    const double sep = collidePlayer(world.carBox(), world.colliders()[0]).separation;
+    const double sep = collidePlayer(world.carBox(), world.colliders().shape(0)).separation;
     if (side <= 0.0 || sep < -2.0 * kResting - 1e-9) {
       why << "frame " << world.frame() << ": centre " << side << " m in front of the target, sep "
           << sep;
