@@ -20,27 +20,28 @@ namespace cardemo::obb3_detail {
 namespace {
 
 // Lane k of next1(u) is lane k + 1 (mod 3) of u, of next2(u) lane k + 2; lane 3 stays.
-inline __m256d next1(__m256d u) {
+[[gnu::always_inline]] inline __m256d next1(__m256d u) {
   return _mm256_permute4x64_pd(u, 0b11001001);
 }
-inline __m256d next2(__m256d u) {
+[[gnu::always_inline]] inline __m256d next2(__m256d u) {
   return _mm256_permute4x64_pd(u, 0b11010010);
 }
-inline __m256d abs4(__m256d u) {
+[[gnu::always_inline]] inline __m256d abs4(__m256d u) {
   return _mm256_andnot_pd(_mm256_set1_pd(-0.0), u);
 }
-inline __m256d splat(double x) {
+[[gnu::always_inline]] inline __m256d splat(double x) {
   return _mm256_set1_pd(x);
 }
-// (x, y, z, 0).
-inline __m256d gather(double x, double y, double z) {
-  return _mm256_set_pd(0.0, z, y, x);
+// (x, y, z, z): lane 3 is never read (every maximum and mask below leaves it out). Not a zero
+// there: the zeroing move GCC emits for one is an encoding valgrind 3.19 cannot run.
+[[gnu::always_inline]] inline __m256d gather(double x, double y, double z) {
+  return _mm256_setr_pd(x, y, z, z);
 }
 // Lane 3 set to -infinity, so that it never wins a maximum.
-inline __m256d withoutPadding(__m256d u) {
+[[gnu::always_inline]] inline __m256d withoutPadding(__m256d u) {
   return _mm256_blend_pd(u, splat(-__builtin_inf()), 0b1000);
 }
-double largestLane(__m256d v) {
+[[gnu::always_inline]] inline double largestLane(__m256d v) {
   const __m128d half = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_max_pd(half, _mm_unpackhi_pd(half, half)));
 }
@@ -52,7 +53,7 @@ struct Lanes {
   __m256d gap[3], length2[3];
 };
 
-Lanes poseAndFaces(const BoxNumbers& a, const BoxNumbers& b) {
+[[gnu::always_inline]] inline Lanes poseAndFaces(const BoxNumbers& a, const BoxNumbers& b) {
   Lanes p;
   const double* ra = a.rotation;
   const double* rb = b.rotation;
@@ -94,7 +95,7 @@ Lanes poseAndFaces(const BoxNumbers& a, const BoxNumbers& b) {
 }
 
 // obb3.cpp's fastEdges, column j of R per register.
-void fastEdges(const BoxNumbers& a, const BoxNumbers& b, Lanes& p) {
+[[gnu::always_inline]] inline void fastEdges(const BoxNumbers& a, const BoxNumbers& b, Lanes& p) {
   const __m256d ha = gather(a.half[0], a.half[1], a.half[2]);
   const __m256d t1 = next1(p.t), t2 = next2(p.t);
   const __m256d ha1 = next1(ha), ha2 = next2(ha);

@@ -20,20 +20,20 @@ namespace cardemo::sat_detail {
 namespace {
 
 // Lanes 0, 2 (A's axes) from a, lanes 1, 3 (B's) from b.
-inline __m256d aLanesFrom(__m256d a, __m256d b) {
+[[gnu::always_inline]] inline __m256d aLanesFrom(__m256d a, __m256d b) {
   return _mm256_blend_pd(a, b, 0b1010);
 }
 
-inline __m256d project(__m256d nx, __m256d ny, __m256d x, __m256d y) {
+[[gnu::always_inline]] inline __m256d project(__m256d nx, __m256d ny, __m256d x, __m256d y) {
   return _mm256_add_pd(_mm256_mul_pd(nx, x), _mm256_mul_pd(ny, y));
 }
 
-double largestLane(__m256d v) {
+[[gnu::always_inline]] inline double largestLane(__m256d v) {
   const __m128d half = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_max_pd(half, _mm_unpackhi_pd(half, half)));
 }
 
-double smallestLane(__m256d v) {
+[[gnu::always_inline]] inline double smallestLane(__m256d v) {
   const __m128d half = _mm_min_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_min_pd(half, _mm_unpackhi_pd(half, half)));
 }
