@@ -53,7 +53,9 @@ void drawDamageNumbers(Canvas& canvas, const Camera& camera, const Effects& effe
     const double grow = 1.0 + 0.6 * std::max(0.0, 1.0 - t * 8.0);
     const int px = static_cast<int>(std::lround((22.0 + 0.35 * n.damage) * s * grow));
     const double alpha = 255.0 * std::min(1.0, (1.0 - t) / 0.4);
-    const std::string text = "-" + std::to_string(n.damage);
+    // Appended, not "-" + string: GCC 12 at -O3 warns falsely (-Wrestrict) on the prepending form.
+    std::string text(1, '-');
+    text += std::to_string(n.damage);
     const Eigen::Vector2f size = canvas.textSize(text, px);
     const Eigen::Vector2f at = camera.toScreen(n.at + Eigen::Vector2d{0.0, kRiseM * t}) -
                                0.5f * size - Eigen::Vector2f{0.0f, 0.6f * size.y()};
