@@ -54,15 +54,19 @@ void checkPair(const Pair3& p, int index, Failures& f, ClassStats& s, bool stric
     };
     const double err = std::abs(r.separation - ex.separation);
     s.max_error = std::max(s.max_error, err);
-    std::ostringstream m;
-    m.precision(17);
-    m << "exact hit=" << ex.hit << " sep=" << ex.separation << "; got hit=" << r.hit
-      << " sep=" << r.separation << " axis=" << r.axis_index;
-    if (!(err <= kSepTolerance)) fail("separation off: " + m.str());
-    if (checkHit && r.hit != ex.hit) fail("hit wrong: " + m.str());
-    if (overlapObb3(*x, *y) != r.hit) fail("overlapObb3 disagrees: " + m.str());
-    if (!(std::abs(r.normal.norm() - 1.0) <= 1e-12)) fail("normal not unit: " + m.str());
-    if (r.hit != (r.separation <= 0.0)) fail("hit inconsistent with sep: " + m.str());
+    // Formatted only for a failure.
+    const auto verdicts = [&, r = r]() {
+      std::ostringstream m;
+      m.precision(17);
+      m << "exact hit=" << ex.hit << " sep=" << ex.separation << "; got hit=" << r.hit
+        << " sep=" << r.separation << " axis=" << r.axis_index;
+      return m.str();
+    };
+    if (!(err <= kSepTolerance)) fail("separation off: " + verdicts());
+    if (checkHit && r.hit != ex.hit) fail("hit wrong: " + verdicts());
+    if (overlapObb3(*x, *y) != r.hit) fail("overlapObb3 disagrees: " + verdicts());
+    if (!(std::abs(r.normal.norm() - 1.0) <= 1e-12)) fail("normal not unit: " + verdicts());
+    if (r.hit != (r.separation <= 0.0)) fail("hit inconsistent with sep: " + verdicts());
     // The normal points from the first box towards the second.
     const Eigen::Vector3d d = y->center - x->center;
     if (!(r.normal.dot(d) >= -1e-9 * (1.0 + d.norm()))) fail("normal points backwards");

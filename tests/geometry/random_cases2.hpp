@@ -156,21 +156,24 @@ template <class PA, class PB>
 void checkAgainstExact(const SatResult2& r, bool exact_hit, double exact_sep, const PA& points_a,
                        const PB& points_b, const Eigen::Vector2d& ref, int index, Failures& f,
                        ClassStats& stats) {
-  std::ostringstream ctx;
-  ctx.precision(17);
-  ctx << " (sep " << r.separation << ", exact " << exact_sep << ", hit " << r.hit << ", exact hit "
-      << exact_hit << ")";
-  if (std::abs(exact_sep) > kHitTolerance)
-    f.check(r.hit == exact_hit, index, "hit differs" + ctx.str());
+  // The context is formatted only for a failure.
+  const auto fail = [&](const std::string& what) {
+    std::ostringstream ctx;
+    ctx.precision(17);
+    ctx << what << " (sep " << r.separation << ", exact " << exact_sep << ", hit " << r.hit
+        << ", exact hit " << exact_hit << ")";
+    f.fail(index, ctx.str());
+  };
+  if (std::abs(exact_sep) > kHitTolerance && r.hit != exact_hit) fail("hit differs");
   const double err = std::abs(r.separation - exact_sep);
   stats.max_error = std::max(stats.max_error, err);
-  f.check(err <= kSepTolerance, index, "sep error too large" + ctx.str());
-  f.check(r.hit == (r.separation <= 0.0), index, "hit disagrees with own sep" + ctx.str());
-  f.check(std::abs(r.normal.norm() - 1.0) <= 1e-12, index, "normal not unit" + ctx.str());
+  if (!(err <= kSepTolerance)) fail("sep error too large");
+  if (r.hit != (r.separation <= 0.0)) fail("hit disagrees with own sep");
+  if (!(std::abs(r.normal.norm() - 1.0) <= 1e-12)) fail("normal not unit");
   // The normal must be an axis whose A-to-B gap is the reported separation (sign included).
   const double g = signedGap(points_a, points_b, r.normal, ref);
-  f.check(std::abs(g - r.separation) <= kSepTolerance, index,
-          "gap along normal is " + std::to_string(g) + ctx.str());
+  if (!(std::abs(g - r.separation) <= kSepTolerance))
+    fail("gap along normal is " + std::to_string(g));
 }
 
 }  // namespace cardemo::testing
