@@ -80,13 +80,15 @@ struct Lanes {
                                                        _mm256_mul_pd(p.abscol[1], splat(hb[1]))),
                                          _mm256_mul_pd(p.abscol[2], splat(hb[2])));
   p.face_a = _mm256_sub_pd(_mm256_sub_pd(abs4(p.t), ha), radius_b);
-  // B's face j: A's radius sum_k |r_kj| ha_k over lanes k of col[j], here lane j of a sum over
-  // the rows of R (row k, lane j: r_kj, formed in col's order with the factors swapped).
-  __m256d row_abs[3];
-  for (int k = 0; k < 3; ++k) {
-    row_abs[k] =
-        abs4(dotColumns(bx, by, bz, splat(ra[3 * k]), splat(ra[3 * k + 1]), splat(ra[3 * k + 2])));
-  }
+  // B's face j: A's radius sum_k |r_kj| ha_k over lanes k of abscol[j], here lane j of a sum over
+  // the rows of |R|, which are the columns transposed (no arithmetic, so the same values).
+  const __m256d lo01 = _mm256_unpacklo_pd(p.abscol[0], p.abscol[1]);  // r00 r01 r20 r21
+  const __m256d hi01 = _mm256_unpackhi_pd(p.abscol[0], p.abscol[1]);  // r10 r11 .. ..
+  const __m256d lo22 = _mm256_unpacklo_pd(p.abscol[2], p.abscol[2]);  // r02 r02 r22 r22
+  const __m256d hi22 = _mm256_unpackhi_pd(p.abscol[2], p.abscol[2]);  // r12 r12 .. ..
+  const __m256d row_abs[3] = {_mm256_permute2f128_pd(lo01, lo22, 0x20),
+                              _mm256_permute2f128_pd(hi01, hi22, 0x20),
+                              _mm256_permute2f128_pd(lo01, lo22, 0x31)};
   const __m256d radius_a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(row_abs[0], splat(a.half[0])),
                                                        _mm256_mul_pd(row_abs[1], splat(a.half[1]))),
                                          _mm256_mul_pd(row_abs[2], splat(a.half[2])));
