@@ -22,11 +22,9 @@ FrameComparer::FrameComparer(const World& world, const CompareOptions& options)
   report_.radius = options.radius;
   const StaticColliders& colliders = world.colliders();
   shapes_.reserve(colliders.size());
-  bounds_.reserve(colliders.size());
   report_.ids.reserve(colliders.size());
   for (std::uint32_t i = 0; i < colliders.size(); ++i) {
     shapes_.push_back(box2dShapesOf(colliders.shape(i)));
-    bounds_.push_back(colliders.bounds(i));
     report_.ids.push_back(world.colliderId(i));
   }
   for (auto& last : last_true_) last.assign(colliders.size(), -2);
@@ -42,9 +40,11 @@ void FrameComparer::check(const World& world) {
   const StaticColliders& colliders = world.colliders();
   report_.frames = world.frame();
   for (std::uint32_t i = 0; i < colliders.size(); ++i) {
-    if (options_.radius && aabbDistance(player_bounds, bounds_[i]) > *options_.radius) continue;
-    const PairVerdicts v =
-        judgePair(player, player_, colliders.shape(i), shapes_[i], options_.all_exact);
+    if (options_.radius && aabbDistance(player_bounds, colliders.bounds(i)) > *options_.radius)
+      continue;
+    const PairVerdicts v = colliders.visit(i, [&](const auto& shape) {
+      return judgePair(player, player_, shape, shapes_[i], options_.all_exact);
+    });
     record(world.frame(), i, v);
   }
 }

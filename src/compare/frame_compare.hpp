@@ -90,7 +90,6 @@ class FrameComparer {
   CompareOptions options_;
   CompareReport report_;
   std::vector<Box2dPair> shapes_;
-  std::vector<Aabb2> bounds_;
   Box2dPair player_;
   // Per verdict and collider: the last frame at which the verdict was true (-2: never).
   std::array<std::vector<std::int64_t>, kVerdictCount> last_true_;

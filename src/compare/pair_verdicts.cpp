@@ -34,8 +34,19 @@ Box2dPair box2dShapesOf(const StaticShape& shape) {
   return {box2dPolygon(polygon, 0.0f), box2dPolygon(polygon, kBox2dDefaultSkin)};
 }
 
-PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const StaticShape& shape,
-                       const Box2dPair& shape_b2, bool all_exact) {
+namespace {
+
+exact::ExactResult exactCollide(const Obb2& player, const Obb2& box) {
+  return exact::collideObb2(player, box);
+}
+
+exact::ExactResult exactCollide(const Obb2& player, const ConvexPolygon& polygon) {
+  return exact::collideObbPolygon(player, polygon);
+}
+
+template <class Shape>
+PairVerdicts judgeShape(const Obb2& player, const Box2dPair& player_b2, const Shape& shape,
+                        const Box2dPair& shape_b2, bool all_exact) {
   PairVerdicts out;
   const double ours = collidePlayer(player, shape).separation;
   out.hit[static_cast<int>(Verdict::kOurs)] = ours <= 0.0;
@@ -44,10 +55,7 @@ PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const Sta
     out.exact_separation = ours;
     out.hit[static_cast<int>(Verdict::kExact)] = ours <= 0.0;
   } else {
-    const exact::ExactResult e =
-        std::holds_alternative<Obb2>(shape)
-            ? exact::collideObb2(player, std::get<Obb2>(shape))
-            : exact::collideObbPolygon(player, std::get<ConvexPolygon>(shape));
+    const exact::ExactResult e = exactCollide(player, shape);
     out.exact_separation = e.separation;
     out.hit[static_cast<int>(Verdict::kExact)] = e.hit;
     out.used_gmp = true;
@@ -59,6 +67,24 @@ PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const Sta
   out.hit[static_cast<int>(Verdict::kBox2dSkin)] = skin.points > 0;
   out.hit[static_cast<int>(Verdict::kBox2dSkinOverlap)] = skin.overlap;
   return out;
+}
+
+}  // namespace
+
+PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const Obb2& box,
+                       const Box2dPair& shape_b2, bool all_exact) {
+  return judgeShape(player, player_b2, box, shape_b2, all_exact);
+}
+
+PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const ConvexPolygon& polygon,
+                       const Box2dPair& shape_b2, bool all_exact) {
+  return judgeShape(player, player_b2, polygon, shape_b2, all_exact);
+}
+
+PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2, const StaticShape& shape,
+                       const Box2dPair& shape_b2, bool all_exact) {
+  return std::visit(
+      [&](const auto& s) { return judgePair(player, player_b2, s, shape_b2, all_exact); }, shape);
 }
 
 Agreement agreementOf(bool verdict, bool exact, double exact_separation) {

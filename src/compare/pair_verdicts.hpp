@@ -55,6 +55,13 @@ struct PairVerdicts {
 [[nodiscard]] PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2,
                                      const StaticShape& shape, const Box2dPair& shape_b2,
                                      bool all_exact);
+/// judgePair against a parked car's box.
+[[nodiscard]] PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2,
+                                     const Obb2& box, const Box2dPair& shape_b2, bool all_exact);
+/// judgePair against an obstacle.
+[[nodiscard]] PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2,
+                                     const ConvexPolygon& polygon, const Box2dPair& shape_b2,
+                                     bool all_exact);
 
 /// Agreement of one verdict with the exact one.
 enum class Agreement { kAgree, kDisagree, kBorderline };

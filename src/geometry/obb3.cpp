@@ -366,6 +366,7 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
       assert(isFinite(r));
       return r;
     }
+    // Some edge gap lies within the bound: the SSE2 path below takes the edges one by one.
   }
 #endif
   const Pose3 p = relativePose(a, b);

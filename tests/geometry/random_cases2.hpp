@@ -56,21 +56,11 @@ class Random {
     return {center, direction(), half};
   }
   /// Convex polygon of 3..16 vertices on an ellipse (sorted random angles), rotated, around
-  /// `center`.
+  /// `center`, in either winding.
   ConvexPolygon polygon(const Eigen::Vector2d& center, double lo, double hi) {
     for (;;) {
-      const int n = integer(3, ConvexPolygon::kMaxVertices);
-      std::vector<double> angles(static_cast<std::size_t>(n));
-      for (double& t : angles) t = uniform(0.0, 2.0 * std::numbers::pi);
-      std::sort(angles.begin(), angles.end());
-      const double rx = 0.5 * logUniform(lo, hi), ry = 0.5 * logUniform(lo, hi);
-      const Eigen::Vector2d u = direction();
-      std::vector<Eigen::Vector2d> points;
-      for (double t : angles) {
-        const Eigen::Vector2d e{rx * std::cos(t), ry * std::sin(t)};
-        points.push_back(
-            center + Eigen::Vector2d(u.x() * e.x() - u.y() * e.y(), u.y() * e.x() + u.x() * e.y()));
-      }
+      std::vector<Eigen::Vector2d> points =
+          pointsOnEllipse(integer(3, ConvexPolygon::kMaxVertices), center, lo, hi);
       if (integer(0, 1) == 1) std::reverse(points.begin(), points.end());
       if (auto p = ConvexPolygon::fromPoints(points)) return *p;
     }
@@ -78,19 +68,25 @@ class Random {
   /// Convex quadrilateral on an ellipse (as polygon()), rotated, around `center`.
   ConvexPolygon quadrilateral(const Eigen::Vector2d& center, double lo, double hi) {
     for (;;) {
-      double angles[4];
-      for (double& t : angles) t = uniform(0.0, 2.0 * std::numbers::pi);
-      std::sort(std::begin(angles), std::end(angles));
-      const double rx = 0.5 * logUniform(lo, hi), ry = 0.5 * logUniform(lo, hi);
-      const Eigen::Vector2d u = direction();
-      std::vector<Eigen::Vector2d> points;
-      for (double t : angles) {
-        const Eigen::Vector2d e{rx * std::cos(t), ry * std::sin(t)};
-        points.push_back(
-            center + Eigen::Vector2d(u.x() * e.x() - u.y() * e.y(), u.y() * e.x() + u.x() * e.y()));
-      }
-      if (auto p = ConvexPolygon::fromPoints(points)) return *p;
+      if (auto p = ConvexPolygon::fromPoints(pointsOnEllipse(4, center, lo, hi))) return *p;
     }
+  }
+  /// `n` points at sorted random angles on an ellipse with diameters log-uniform in [lo, hi],
+  /// rotated at random, around `center` (counter-clockwise).
+  std::vector<Eigen::Vector2d> pointsOnEllipse(int n, const Eigen::Vector2d& center, double lo,
+                                               double hi) {
+    std::vector<double> angles(static_cast<std::size_t>(n));
+    for (double& t : angles) t = uniform(0.0, 2.0 * std::numbers::pi);
+    std::sort(angles.begin(), angles.end());
+    const double rx = 0.5 * logUniform(lo, hi), ry = 0.5 * logUniform(lo, hi);
+    const Eigen::Vector2d u = direction();
+    std::vector<Eigen::Vector2d> points;
+    for (double t : angles) {
+      const Eigen::Vector2d e{rx * std::cos(t), ry * std::sin(t)};
+      points.push_back(
+          center + Eigen::Vector2d(u.x() * e.x() - u.y() * e.y(), u.y() * e.x() + u.x() * e.y()));
+    }
+    return points;
   }
   /// Underlying engine.
   std::mt19937_64& engine() { return rng_; }
