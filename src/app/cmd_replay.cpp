@@ -69,6 +69,7 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
          fixedText(car.speed, 2) + " m/s\n";
   out += "hash      " + hashHex(world.stateHash()) + "\n";
   out += "work      " + std::to_string(s.broadphase_queries) + " broad-phase queries (" +
+         std::to_string(s.reused_queries) + " more answered from the last one's grown box, " +
          std::to_string(s.skipped_queries) + " skipped: box unchanged), " +
          std::to_string(s.broadphase_candidates) + " candidates, " +
          std::to_string(s.narrowphase_tests) + " narrow-phase tests, " +

@@ -59,6 +59,7 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
         {"narrowphase_tests", s.narrowphase_tests},
         {"contacts", s.contacts},
         {"skipped_queries", s.skipped_queries},
+        {"reused_queries", s.reused_queries},
         {"substeps", s.substeps},
         {"sweeps", s.sweeps},
         {"broadphase_builds", s.broadphase_builds}}},

@@ -51,6 +51,7 @@ void drawCounters(Canvas& canvas, const World& world, const OverlayPalette& pale
       {"contacts", std::to_string(world.contacts().size()), palette.normal},
       {"colliders", std::to_string(world.colliders().size()), white},
       {"queries run", std::to_string(st.broadphase_queries), white},
+      {"queries reused", std::to_string(st.reused_queries), white},
       {"queries skipped", std::to_string(st.skipped_queries), white},
       {"candidates, total", std::to_string(st.broadphase_candidates), white},
       {"narrow-phase tests", std::to_string(st.narrowphase_tests), white},

@@ -17,6 +17,11 @@ namespace {
 constexpr double kNoContact = 2.0;
 // Damage points (speed x damage_per_mps) this close above an integer still round down to it.
 constexpr double kDamageRounding = 1e-9;
+// How far (metres) a grid query reaches past the query box on each side, so that the next steps'
+// query boxes, a few centimetres further on, still lie inside it and need no grid query (the fat
+// AABBs of Box2D's b2DynamicTree, b2_aabbExtension = 0.1 m, for the same reason). A larger margin
+// runs fewer grid queries but filters a longer list each step.
+constexpr double kCoverMargin = 1.0;
 
 StaticColliders collidersOf(const Scene& scene) {
   std::vector<Obb2> boxes;
@@ -40,11 +45,6 @@ CarParams paramsFor(const WorldSettings& settings, const PlayerStart& player) {
 bool sameBox(const Obb2& a, const Obb2& b) {
   return a.center.x() == b.center.x() && a.center.y() == b.center.y() && a.axis.x() == b.axis.x() &&
          a.axis.y() == b.axis.y() && a.half.x() == b.half.x() && a.half.y() == b.half.y();
-}
-
-bool sameAabb(const Aabb2& a, const Aabb2& b) {
-  return a.min.x() == b.min.x() && a.min.y() == b.min.y() && a.max.x() == b.max.x() &&
-         a.max.y() == b.max.y();
 }
 
 bool sameBits(double a, double b) {
@@ -110,26 +110,35 @@ Obb2 World::carBox() const {
 
 void World::detect() {
   const Obb2 box = carBox();
-  // Same pose as the last narrow phase: its query box and its answer still hold (narrowPhase
-  // always runs right after last_query_box_ is set to that pose's query box).
+  // Same pose as the last narrow phase: its candidates and its answer still hold (a sweep, which
+  // replaces the candidates, clears have_detected_).
   if (have_detected_ && sameBox(box, detected_box_)) {
     ++stats_.skipped_queries;
     return;
   }
   const Aabb2 bounds = box.aabb();
-  const Aabb2 query = queryBox(box, bounds, settings_.schemes.broad_phase_box);
-  if (have_query_ && sameAabb(query, last_query_box_)) {
-    ++stats_.skipped_queries;
-    // Reused candidates still feed the narrow phase, so they are counted as candidates again.
-    stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
-  } else {
-    grid_.query(query, candidates_);
-    last_query_box_ = query;
-    have_query_ = true;
-    ++stats_.broadphase_queries;
-    stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
-  }
+  gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
   narrowPhase(box, bounds);
+}
+
+void World::gatherCandidates(const Aabb2& query) {
+  // NaN-safe: a NaN query is never contained, and the grid finds nothing for it.
+  if (have_cover_ && cover_box_.contains(query)) {
+    ++stats_.reused_queries;
+  } else {
+    const Eigen::Vector2d margin(kCoverMargin, kCoverMargin);
+    cover_box_ = {query.min - margin, query.max + margin};
+    grid_.query(cover_box_, cover_);
+    have_cover_ = true;
+    ++stats_.broadphase_queries;
+  }
+  // Every box that touches the query touches the cover box, so these are exactly the ids a grid
+  // query on `query` returns (the grid's own closed-interval test), in the same order.
+  candidates_.clear();
+  for (const std::uint32_t id : cover_) {
+    if (colliders_.bounds(id).overlaps(query)) candidates_.push_back(id);
+  }
+  stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
 }
 
 void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
@@ -225,14 +234,8 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
   // One query with the box swept over the whole motion (start merged with end: a translating box
   // stays inside the hull of its two ends).
   const BroadPhaseBox kind = settings_.schemes.broad_phase_box;
-  const Aabb2 query =
-      queryBox(box, box.aabb(), kind).merged(queryBox(end_box, end_box.aabb(), kind));
-  grid_.query(query, candidates_);
-  last_query_box_ = query;
-  have_query_ = true;
+  gatherCandidates(queryBox(box, box.aabb(), kind).merged(queryBox(end_box, end_box.aabb(), kind)));
   have_detected_ = false;
-  ++stats_.broadphase_queries;
-  stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
 
   const double limit = half_min_extent_;
   const double length = std::sqrt(displacement.squaredNorm());
@@ -316,7 +319,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
       car_.position = t == 1.0 ? target.position : turned.position + displacement * t;
       stats_.substeps += i - 1;
       contact_fraction_ = (static_cast<double>(i - 1) + first_toi_) / static_cast<double>(n);
-      detectWithinSweep(carBox());
+      detect();
       return;
     }
     pose = target;
@@ -325,26 +328,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
   // No new contact on the way: the end pose's contacts (sliding along something, or pressed into
   // it by less than the bound) are tested at the end pose.
   car_ = next;
-  detectWithinSweep(carBox());
-}
-
-void World::detectWithinSweep(const Obb2& box) {
-  const Aabb2 bounds = box.aabb();
-  const Aabb2 query = queryBox(box, bounds, settings_.schemes.broad_phase_box);
-  if (!last_query_box_.contains(query)) {
-    detect();
-    return;
-  }
-  // Inside the swept query box, the candidates are the swept ones whose bounds meet this box's
-  // query: exactly what a fresh query returns (same test, same order), without running one.
-  std::size_t kept = 0;
-  for (const std::uint32_t id : candidates_) {
-    if (colliders_.bounds(id).overlaps(query)) candidates_[kept++] = id;
-  }
-  candidates_.resize(kept);
-  last_query_box_ = query;
-  stats_.broadphase_candidates += static_cast<std::int64_t>(kept);
-  narrowPhase(box, bounds);
+  detect();
 }
 
 void World::resolveContacts() {

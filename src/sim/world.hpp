@@ -57,7 +57,10 @@ struct WorldStats {
   std::int64_t contacts = 0;               ///< Frames x colliders in contact, summed.
   std::int64_t substeps = 0;         ///< Extra collision sub-steps (sub-stepped mode, or rotation).
   std::int64_t skipped_queries = 0;  ///< Steps where the player's box had not changed.
-  std::int64_t sweeps = 0;           ///< Swept SAT tests run (continuous mode, fast steps only).
+  /// Queries answered from the last grid query's grown box instead of the grid (the candidates
+  /// are the same).
+  std::int64_t reused_queries = 0;
+  std::int64_t sweeps = 0;             ///< Swept SAT tests run (continuous mode, fast steps only).
   std::int64_t broadphase_builds = 0;  ///< Times the broad-phase structure was built (once).
   std::int64_t resting_steps = 0;  ///< Steps skipped whole: at rest, same input as the step before.
 };
@@ -154,8 +157,11 @@ class World {
   std::int64_t crash_window_frames_ = 0;
   std::int64_t scrape_frames_ = 0;  // frames spent scraping so far
   int scrape_damage_ = 0;           // damage charged for them
-  Aabb2 last_query_box_;
-  bool have_query_ = false;
+  // The last grid query ran on cover_box_, the query box grown by kCoverMargin, and found cover_
+  // (in id order). A query box inside it is answered from cover_ (gatherCandidates).
+  Aabb2 cover_box_;
+  bool have_cover_ = false;
+  std::vector<std::uint32_t> cover_;
   WorldStats stats_;
 
   // Per-step scratch (reserved once, so step() does not allocate when warm).
@@ -175,7 +181,7 @@ class World {
   void detect();
   void narrowPhase(const Obb2& box, const Aabb2& bounds);
   void smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const;
-  void detectWithinSweep(const Obb2& box);
+  void gatherCandidates(const Aabb2& query);
   void mergeDetected();
   void moveWithSubsteps(const CarState& start, const CarState& next);
   void moveContinuous(const CarState& start, const CarState& next);

@@ -209,7 +209,9 @@ TEST(World, NarrowPhaseRunsOnlyOnCandidates) {
   for (const InputFrame& in : test::scriptedDrive(5, 1200)) empty.step(in);
   EXPECT_EQ(empty.stats().narrowphase_tests, 0);
   EXPECT_EQ(empty.stats().broadphase_candidates, 0);
-  EXPECT_GT(empty.stats().broadphase_queries, 1000);
+  // Every moved frame still asks the broad phase, mostly answered from the grown box.
+  EXPECT_GT(empty.stats().broadphase_queries + empty.stats().reused_queries, 1000);
+  EXPECT_GT(empty.stats().reused_queries, 10 * empty.stats().broadphase_queries);
 
   World lot(test::parkingLot(3));
   for (const InputFrame& in : test::scriptedDrive(3, 3000)) lot.step(in);

@@ -3,6 +3,7 @@
 // stationary car costing nothing after frame 0.
 #include <gtest/gtest.h>
 
+#include "collision/narrow_phase.hpp"
 #include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
@@ -51,22 +52,25 @@ TEST(WorldWork, NoQueryWhileTheBoxIsUnchanged) {
   std::int64_t queries_when_stopped = -1;
   for (int f = 0; f < 600; ++f) {
     const Obb2 before = world.carBox();
-    const std::int64_t queries = world.stats().broadphase_queries;
+    // Queries answered, from the grid or from the last grid query's grown box.
+    const std::int64_t queries = world.stats().broadphase_queries + world.stats().reused_queries;
     const std::int64_t skipped = world.stats().skipped_queries;
     world.step(kBrake.down && world.car().speed > 0.0 ? kBrake : kNone);
     const Obb2 after = world.carBox();
     const bool unchanged = before.center == after.center && before.axis == after.axis;
     if (unchanged) {
       ++frames_stopped;
-      ASSERT_EQ(world.stats().broadphase_queries, queries) << "frame " << world.frame();
+      ASSERT_EQ(world.stats().broadphase_queries + world.stats().reused_queries, queries)
+          << "frame " << world.frame();
       ASSERT_EQ(world.stats().skipped_queries, skipped + 1) << "frame " << world.frame();
       if (queries_when_stopped < 0) queries_when_stopped = queries;
     } else {
-      ASSERT_EQ(world.stats().broadphase_queries, queries + 1) << "frame " << world.frame();
+      ASSERT_EQ(world.stats().broadphase_queries + world.stats().reused_queries, queries + 1)
+          << "frame " << world.frame();
     }
   }
   EXPECT_GT(frames_stopped, 300);
-  EXPECT_EQ(world.stats().broadphase_queries, queries_when_stopped);
+  EXPECT_EQ(world.stats().broadphase_queries + world.stats().reused_queries, queries_when_stopped);
 }
 
 TEST(WorldWork, NoNarrowPhaseWithoutACandidate) {
@@ -155,8 +159,48 @@ TEST(WorldWork, BroadPhaseIsBuiltOnce) {
   EXPECT_EQ(world.stats().broadphase_builds, 1);
   for (const InputFrame& in : test::scriptedDrive(19, 5000)) world.step(in);
   EXPECT_GT(world.hits().size(), 0u);
-  EXPECT_GT(world.stats().broadphase_queries, 1000);
+  EXPECT_GT(world.stats().broadphase_queries + world.stats().reused_queries, 1000);
   EXPECT_EQ(world.stats().broadphase_builds, 1);
+}
+
+// The ids whose bounds touch `query`, in id order: what a grid query on it returns.
+std::vector<std::uint32_t> touching(const Scene& scene, const Aabb2& query) {
+  std::vector<std::uint32_t> ids;
+  for (std::size_t i = 0; i < scene.parked.size(); ++i) {
+    if (boundsOf(scene.parked[i].box).overlaps(query)) ids.push_back(static_cast<std::uint32_t>(i));
+  }
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    if (boundsOf(scene.obstacles[i].polygon).overlaps(query)) {
+      ids.push_back(static_cast<std::uint32_t>(scene.parked.size() + i));
+    }
+  }
+  return ids;
+}
+
+TEST(WorldWork, GrownQueryBoxGivesTheCandidatesOfAFreshQuery) {
+  // After every step the candidates (of the last detect, at the car's current box) are exactly the
+  // colliders whose bounds touch its query box, although most steps ran no grid query; near the
+  // origin and 1e7 m from it, from rest and launched fast into a row (the swept query).
+  for (const double offset : {0.0, 1e7}) {
+    for (const double speed : {0.0, 400.0}) {
+      Scene scene = test::translated(test::parkingLot(19), {offset, -offset});
+      scene.player.speed = speed;
+      scene.player.heading_deg = speed > 0.0 ? 90.0 : 0.0;  // fast: straight into a row (sweeps)
+      World world(scene);
+      std::int64_t compared = 0;
+      for (const InputFrame& in : test::scriptedDrive(19, 5000)) {
+        world.step(in);
+        const Obb2 box = world.carBox();
+        ASSERT_EQ(world.candidates(), touching(scene, box.aabb()))
+            << "offset " << offset << " speed " << speed << " frame " << world.frame();
+        compared += static_cast<std::int64_t>(world.candidates().size());
+      }
+      EXPECT_GT(world.hits().size(), 0u) << offset << " " << speed;
+      EXPECT_GT(compared, 1000) << offset << " " << speed;
+      EXPECT_GT(world.stats().reused_queries, 2 * world.stats().broadphase_queries)
+          << offset << " " << speed;
+    }
+  }
 }
 
 }  // namespace
