@@ -349,6 +349,8 @@ TEST(ConvexPolygonSat, SeparatedTriangles) {
 TEST(ConvexPolygonSat, QuadrilateralsGiveTheSameBitsOnEveryPath) {
   testing::BatchPathGuard guard;
   const std::vector<BatchPath> paths = testing::availableBatchPaths();
+  // With the portable path only there is nothing to compare: say so rather than pass.
+  if (paths.size() < 2) GTEST_SKIP() << "this CPU runs only the portable path";
   Random rng(2007);
   for (int i = 0; i < 20000; ++i) {
     auto [a, b] = quadrilateralPair(rng);

@@ -352,6 +352,8 @@ TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
 TEST(Obb3FastPath, EveryPathGivesTheSameBits) {
   testing::BatchPathGuard guard;
   const std::vector<BatchPath> paths = testing::availableBatchPaths();
+  // With the portable path only there is nothing to compare: say so rather than pass.
+  if (paths.size() < 2) GTEST_SKIP() << "this CPU runs only the portable path";
   const std::function<Pair3(std::mt19937_64&)> kinds[] = {
       test3::gapPair,      test3::farPair,
       test3::sizePair,     [](std::mt19937_64& rng) { return test3::nearParallelPair(rng); },
