@@ -201,19 +201,50 @@ template <int N, class F>
 struct EdgeFilter {
   double bound;        // on |gap times axis length|, metres
   double min_length2;  // floor on the squared axis length for a normalised fast gap
+  double scale;        // the pair's scale, metres
 };
 
 [[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b,
                                                     const Eigen::Vector3d& d) {
   constexpr double kU = 0x1p-53;
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  const double phi = std::max(a.frameDefect(), b.frameDefect());
-  if (!(phi <= 0x1p-30)) return {kInf, kInf};
   // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
   const double scale =
       std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) + a.half.sum() + b.half.sum();
+  const double phi = std::max(a.frameDefect(), b.frameDefect());
+  if (!(phi <= 0x1p-30)) return {kInf, kInf, scale};
   const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
-  return {(32.0 * kU + 6.0 * phi) * scale, root * root};
+  return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
+}
+
+// collideObb3's common case compares candidate separations without roots (the batch kernels'
+// Candidate, batch_kernels.hpp): gap / sqrt(length2) is carried as gap, length2 and
+// square = gap |gap|, and as z -> z|z| is increasing, y's separation is the larger iff
+// y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root and one
+// division remain, for the winner only, which reports gap / sqrt(length2) as before.
+//
+// Each product is within 2^-52 relative of the exact one while it is a normal number, so the
+// comparison can disagree with comparing normalised gaps only for two separations within a couple
+// of ulps of each other: which of those two axes wins (an exact tie of the products included) may
+// differ from normalising first, and the reported separation is then within a few ulps of the
+// other's. A positive candidate always beats a non-positive one, so the verdict is unchanged.
+//
+// Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
+// < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
+// 4 scale in magnitude (|t_k| and |along| at most 2.01 |d|_1, the radii at most 1.01 times the
+// half extents' sum). So for 2^-400 <= scale <= 2^400 no product exceeds 2^6 scale^2 <= 2^806,
+// and an edge's is at least 2^-112 scale^2 >= 2^-912, a normal number. A face's product that is
+// not a normal number (|gap| below about 2^-504) is below 2^-1022, far from the edge product it
+// is compared with, so their order stays right. The boxes' domain (kMaxCoordinate, half extents
+// down to zero) reaches beyond that range: such a pair takes the edge-by-edge loop.
+constexpr double kRootFreeMinScale = 0x1p-400;
+constexpr double kRootFreeMaxScale = 0x1p400;
+
+// The bound the common case needs every edge gap to clear: the filter's, or infinity (no edge
+// clears it) for a pair whose scale is outside the root-free comparison's range.
+[[gnu::always_inline]] inline double rootFreeBound(const EdgeFilter& filter) {
+  const bool in_range = filter.scale >= kRootFreeMinScale && filter.scale <= kRootFreeMaxScale;
+  return in_range ? filter.bound : std::numeric_limits<double>::infinity();
 }
 
 // Edge axes a_i x b_j in A's frame, gap times axis length and squared length: lane i of gap[j] and
@@ -290,21 +321,15 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   return true;
 }
 
-// gap / sqrt(length2) lane by lane; on SSE2 one sqrtpd and one divpd, the same correctly rounded
-// operations as the scalar form, so the same bits either way.
-[[gnu::always_inline]] inline V2 normalised2(V2 gap, V2 length2) {
-#if defined(__SSE2__)
-  return gap / static_cast<V2>(_mm_sqrt_pd(length2));
-#else
-  return V2{gap[0] / std::sqrt(length2[0]), gap[1] / std::sqrt(length2[1])};
-#endif
+// Lane by lane x where `take_x`, else y.
+[[gnu::always_inline]] inline V2 select2(M2 take_x, V2 x, V2 y) {
+  return reinterpret_cast<V2>((take_x & reinterpret_cast<M2>(x)) |
+                              (~take_x & reinterpret_cast<M2>(y)));
 }
 
 // Lane by lane max(u, v) (u where u > v).
 [[gnu::always_inline]] inline V2 max2(V2 u, V2 v) {
-  const M2 take_u = u > v;
-  return reinterpret_cast<V2>((take_u & reinterpret_cast<M2>(u)) |
-                              (~take_u & reinterpret_cast<M2>(v)));
+  return select2(u > v, u, v);
 }
 
 // The first largest of the fifteen candidate gaps (faces, then edges 3i + j): `!(g > best)` keeps
@@ -313,6 +338,61 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   const bool larger = g > best;
   best = larger ? g : best;
   best_index = larger ? index : best_index;
+}
+
+// Root-free edge candidates, one per lane (see rootFreeBound): gap times axis length, squared axis
+// length, gap |gap|, and the axis index (SatResult3::axis_index) as a double.
+struct Candidates2 {
+  V2 gap, length2, square, axis;
+};
+
+// Lane by lane the first largest of x then y: y only where its separation is strictly larger.
+[[gnu::always_inline]] inline Candidates2 firstLargest(const Candidates2& x, const Candidates2& y) {
+  const M2 y_wins = y.square * x.length2 > x.square * y.length2;
+  return {select2(y_wins, y.gap, x.gap), select2(y_wins, y.length2, x.length2),
+          select2(y_wins, y.square, x.square), select2(y_wins, y.axis, x.axis)};
+}
+
+// Lane 1 of every field in lane 0.
+[[gnu::always_inline]] inline Candidates2 secondLane(const Candidates2& c) {
+  return {__builtin_shufflevector(c.gap, c.gap, 1, 1),
+          __builtin_shufflevector(c.length2, c.length2, 1, 1),
+          __builtin_shufflevector(c.square, c.square, 1, 1),
+          __builtin_shufflevector(c.axis, c.axis, 1, 1)};
+}
+
+// The first largest edge candidate, in lane 0. The tournament, which obb3_avx2.cpp's
+// largestGapAvx2 runs too so that both paths give the same bits: for each i, edges (i, 0),
+// (i, 1), (i, 2) (lane i of column j's gaps), then those three winners in the order i = 0, 1, 2.
+// Every step keeps the earlier run of axes unless the later one's separation is strictly larger,
+// and every run is consecutive in axis order, so the first largest axis wins a tie.
+[[gnu::always_inline]] inline Candidates2 largestEdge(const FastEdges& fast) {
+  Candidates2 lo, hi;  // lanes i = 0, 1; lane i = 2
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    const V2 gap_lo = fast.gap[j].lo, gap_hi = fast.gap[j].hi;
+    const Candidates2 column_lo{gap_lo, fast.length2[j].lo, gap_lo * abs2(gap_lo),
+                                V2{6.0 + j, 9.0 + j}};
+    const Candidates2 column_hi{gap_hi, fast.length2[j].hi, gap_hi * abs2(gap_hi),
+                                V2{12.0 + j, 12.0 + j}};
+    if constexpr (j == 0) {
+      lo = column_lo;
+      hi = column_hi;
+    } else {
+      lo = firstLargest(lo, column_lo);
+      hi = firstLargest(hi, column_hi);
+    }
+  });
+  return firstLargest(firstLargest(lo, secondLane(lo)), hi);
+}
+
+// The square root, correctly rounded (sqrtsd on SSE2; std::sqrt there adds an errno check).
+[[gnu::always_inline]] inline double root(double x) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+  return std::sqrt(x);
+#endif
 }
 
 // Single entries of Pose3 computed on demand, bit for bit as relativePose forms them (lane k of
@@ -356,8 +436,8 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     const PoseScalars pose{a, b, b.center - a.center};
     const EdgeFilter filter = edgeFilter(a, b, pose.d);
     obb3_detail::LargestGap largest;
-    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), filter.bound, filter.min_length2,
-                                    largest)) {
+    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), rootFreeBound(filter),
+                                    filter.min_length2, largest)) {
       SatResult3 r;
       r.separation = largest.gap;
       r.axis_index = largest.axis;
@@ -382,8 +462,8 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   const FastEdges fast = fastEdges(a, b, p);
   const EdgeFilter filter = edgeFilter(a, b, p.d);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
-  // candidates are the fast ones; they are normalised together and compared without branches.
-  const V2 bound{filter.bound, filter.bound};
+  // candidates are the fast ones; they are compared without roots and without branches.
+  const V2 bound{rootFreeBound(filter), rootFreeBound(filter)};
   const V2 min_length2{filter.min_length2, filter.min_length2};
   M2 sure_lo = abs2(fast.gap[0].lo) > bound, sure_hi = abs2(fast.gap[0].hi) > bound;
   staticFor<3>([&](auto jc) {
@@ -395,29 +475,21 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     sure_lo &= fast.length2[j].lo > min_length2;
     sure_hi &= fast.length2[j].hi > min_length2;
   });
+  r.separation = best;
+  r.axis_index = best_index;
   if (all3(sure_lo, sure_hi)) {
-    V3 g[3];
-    staticFor<3>([&](auto jc) {
-      constexpr int j = decltype(jc)::value;
-      g[j] = {normalised2(fast.gap[j].lo, fast.length2[j].lo),
-              normalised2(fast.gap[j].hi, fast.length2[j].hi)};
-    });
-    staticFor<9>([&](auto ec) {
-      constexpr int e = decltype(ec)::value, i = e / 3, j = e % 3;
-      pickLargest(lane<i>(g[j]), 6 + e, best, best_index);
-    });
-    r.separation = best;
-    r.axis_index = best_index;
-    if (best_index >= 6) {
-      r.normal = fastEdgeNormal(a, p, (best_index - 6) / 3, (best_index - 6) % 3);
-      r.hit = best <= 0.0;
+    const Candidates2 edge = largestEdge(fast);
+    // The faces' winner enters with length2 = 1 and square best |best|.
+    if (edge.square[0] > best * std::abs(best) * edge.length2[0]) {
+      r.separation = edge.gap[0] / root(edge.length2[0]);
+      r.axis_index = static_cast<int>(edge.axis[0]);
+      r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+      r.hit = r.separation <= 0.0;
       assert(isFinite(r));
       return r;
     }
   } else {
     // Some edge gap lies within the bound: edge by edge, the accurate axis where it does.
-    r.separation = best;
-    r.axis_index = best_index;
     bool fast_winner = false;
     bool accurate_winner = false;
     for (int e = 0; e < 9; ++e) {

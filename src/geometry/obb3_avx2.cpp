@@ -114,6 +114,43 @@ struct Lanes {
   }
 }
 
+// obb3.cpp's Candidates2: root-free edge candidates, one per lane, the axis index as a double.
+struct Candidates {
+  __m256d gap, length2, square, axis;
+};
+
+// Lane by lane the first largest of x then y, as obb3.cpp's firstLargest.
+[[gnu::always_inline]] inline Candidates firstLargest(const Candidates& x, const Candidates& y) {
+  const __m256d y_wins = _mm256_cmp_pd(_mm256_mul_pd(y.square, x.length2),
+                                       _mm256_mul_pd(x.square, y.length2), _CMP_GT_OQ);
+  return {_mm256_blendv_pd(x.gap, y.gap, y_wins), _mm256_blendv_pd(x.length2, y.length2, y_wins),
+          _mm256_blendv_pd(x.square, y.square, y_wins), _mm256_blendv_pd(x.axis, y.axis, y_wins)};
+}
+
+// Lane 1 of every field in lane 0 (the other lanes are not read).
+[[gnu::always_inline]] inline Candidates secondLane(const Candidates& c) {
+  return {_mm256_permute_pd(c.gap, 0b0101), _mm256_permute_pd(c.length2, 0b0101),
+          _mm256_permute_pd(c.square, 0b0101), _mm256_permute_pd(c.axis, 0b0101)};
+}
+
+// Lane 2 of every field in lane 0 (the other lanes are not read).
+[[gnu::always_inline]] inline Candidates thirdLane(const Candidates& c) {
+  const auto high = [](__m256d v) { return _mm256_permute2f128_pd(v, v, 0x01); };
+  return {high(c.gap), high(c.length2), high(c.square), high(c.axis)};
+}
+
+// obb3.cpp's largestEdge, the same tournament: lane by lane over the columns j, then lanes 0, 1
+// and 2 in turn. The winner is in lane 0.
+[[gnu::always_inline]] inline Candidates largestEdge(const Lanes& p) {
+  Candidates c[3];
+  for (int j = 0; j < 3; ++j) {
+    c[j] = {p.gap[j], p.length2[j], _mm256_mul_pd(p.gap[j], abs4(p.gap[j])),
+            _mm256_setr_pd(6.0 + j, 9.0 + j, 12.0 + j, 12.0 + j)};
+  }
+  const Candidates lanes = firstLargest(firstLargest(c[0], c[1]), c[2]);
+  return firstLargest(firstLargest(lanes, secondLane(lanes)), thirdLane(lanes));
+}
+
 }  // namespace
 
 void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out) {
@@ -136,23 +173,25 @@ bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, doub
     sure = _mm256_and_pd(sure, _mm256_cmp_pd(p.length2[j], vmin_length2, _CMP_GT_OQ));
   }
   if ((_mm256_movemask_pd(sure) & 0b0111) != 0b0111) return false;
-  alignas(32) double faces[2][4], g[3][4];
-  _mm256_store_pd(faces[0], p.face_a);
-  _mm256_store_pd(faces[1], p.face_b);
-  for (int j = 0; j < 3; ++j) {
-    _mm256_store_pd(g[j], _mm256_div_pd(p.gap[j], _mm256_sqrt_pd(p.length2[j])));
+  // The first largest face gap: the comparisons are exact, so any order finds it (obb3.cpp runs
+  // them in turn), and a face gap is never -0 (|t| - ha is +0 or non-zero, and so is the radius'
+  // difference from it), so the largest value has the bits of the first face holding it.
+  const double face =
+      largestLane(_mm256_max_pd(withoutPadding(p.face_a), withoutPadding(p.face_b)));
+  const __m256d faces = splat(face);
+  const int holding = (_mm256_movemask_pd(_mm256_cmp_pd(p.face_a, faces, _CMP_EQ_OQ)) & 0b0111) |
+                      (_mm256_movemask_pd(_mm256_cmp_pd(p.face_b, faces, _CMP_EQ_OQ)) & 0b0111)
+                          << 3;
+  const Candidates edge = largestEdge(p);
+  // As obb3.cpp: the faces' winner enters with length2 = 1 and square face |face|.
+  if (_mm256_cvtsd_f64(edge.square) >
+      face * __builtin_fabs(face) * _mm256_cvtsd_f64(edge.length2)) {
+    const __m128d length2 = _mm256_castpd256_pd128(edge.length2);
+    const __m128d gap = _mm_div_sd(_mm256_castpd256_pd128(edge.gap), _mm_sqrt_sd(length2, length2));
+    out = {_mm_cvtsd_f64(gap), static_cast<int>(_mm256_cvtsd_f64(edge.axis))};
+  } else {
+    out = {face, __builtin_ctz(static_cast<unsigned>(holding))};
   }
-  // The first largest, faces then edges 3i + j, as obb3.cpp's pickLargest chain.
-  double best = faces[0][0];
-  int best_axis = 0;
-  const auto pick = [&best, &best_axis](double gap, int axis) {
-    const bool larger = gap > best;
-    best = larger ? gap : best;
-    best_axis = larger ? axis : best_axis;
-  };
-  for (int k = 1; k < 6; ++k) pick(faces[k / 3][k % 3], k);
-  for (int e = 0; e < 9; ++e) pick(g[e % 3][e / 3], 6 + e);
-  out = {best, best_axis};
   return true;
 }
 

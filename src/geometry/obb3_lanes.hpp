@@ -26,16 +26,17 @@ struct OverlapGaps {
 /// overlapObb3's face and fast edge gaps. Call only when geometry/batch_path says the CPU has AVX2.
 void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out);
 
-/// collideObb3's common case: the first largest of the fifteen gaps (faces 0-5, edges 6 + 3i + j)
-/// with every edge gap in A's frame, normalised.
+/// collideObb3's common case: the largest of the fifteen gaps (faces 0-5, edges 6 + 3i + j) with
+/// every edge gap in A's frame, normalised; compared without roots, in obb3.cpp's order
+/// (rootFreeBound and largestEdge there), so the winner is the SSE2 path's.
 struct LargestGap {
   double gap;  ///< The largest gap, metres.
   int axis;    ///< Its axis index (SatResult3::axis_index).
 };
 
 /// collideObb3's largest gap, when every edge gap clears the filter: |gap| > bound and squared axis
-/// length > min_length2 (obb3.cpp, EdgeFilter). False, with nothing written, otherwise. Call only
-/// when geometry/batch_path says the CPU has AVX2.
+/// length > min_length2 (obb3.cpp, rootFreeBound and EdgeFilter). False, with nothing written,
+/// otherwise. Call only when geometry/batch_path says the CPU has AVX2.
 bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
                     LargestGap& out);
 
