@@ -281,7 +281,7 @@ struct FastEdges {
 }
 
 // The world-frame unit axis of fast edge (i, j), pointing from A towards B. Pose: a Pose3 or
-// PoseScalars.
+// StoredPose.
 template <class Pose>
 Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int i, int j) {
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
@@ -395,17 +395,12 @@ struct Candidates2 {
 #endif
 }
 
-// Single entries of Pose3 computed on demand, bit for bit as relativePose forms them (lane k of
-// t and of col[j] is dot3 of A's column k with d and b_j).
-struct PoseScalars {
-  const Obb3& a;
-  const Obb3& b;
-  Eigen::Vector3d d;
-  [[nodiscard]] double r(int k, int j) const {
-    return dot3(a.rotation().data() + 3 * k, b.rotation().data() + 3 * j);
-  }
-  [[nodiscard]] double tk(int k) const { return dot3(a.rotation().data() + 3 * k, d.data()); }
-  [[nodiscard]] double tbk(int j) const { return dot3(b.rotation().data() + 3 * j, d.data()); }
+// The pose entries largestGapAvx2 stores, as a Pose3 reads them.
+struct StoredPose {
+  const obb3_detail::LargestGap& g;
+  [[nodiscard]] double r(int k, int j) const { return g.col[j][k]; }
+  [[nodiscard]] double tk(int k) const { return g.t[k]; }
+  [[nodiscard]] double tbk(int j) const { return g.tb[j]; }
 };
 
 // The normal of the winning axis, pointing from A towards B: a fast edge axis, or a stored column
@@ -433,15 +428,14 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
 #if defined(CARDEMO_BATCH_AVX2)
   if (batchPath() != BatchPath::kPortable) {
-    const PoseScalars pose{a, b, b.center - a.center};
-    const EdgeFilter filter = edgeFilter(a, b, pose.d);
+    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
     obb3_detail::LargestGap largest;
     if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), rootFreeBound(filter),
                                     filter.min_length2, largest)) {
       SatResult3 r;
       r.separation = largest.gap;
       r.axis_index = largest.axis;
-      r.normal = winningNormal(a, b, pose, largest.axis);
+      r.normal = winningNormal(a, b, StoredPose{largest}, largest.axis);
       r.hit = r.separation <= 0.0;
       assert(isFinite(r));
       return r;

@@ -49,7 +49,7 @@ namespace {
 // obb3.cpp's Pose3 and FastEdges, as registers: lane k of t is a_k . d, lane k of col[j] is
 // r_kj = a_k . b_j; lane j of face_b is the gap on B's face j.
 struct Lanes {
-  __m256d t, col[3], abscol[3], face_a, face_b;
+  __m256d t, tb, col[3], abscol[3], face_a, face_b;
   __m256d gap[3], length2[3];
 };
 
@@ -71,7 +71,7 @@ struct Lanes {
                          _mm256_mul_pd(z, w));
   };
   p.t = dotColumns(ax, ay, az, vdx, vdy, vdz);
-  const __m256d tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
+  p.tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
   for (int j = 0; j < 3; ++j) {
     p.col[j] = dotColumns(ax, ay, az, splat(rb[3 * j]), splat(rb[3 * j + 1]), splat(rb[3 * j + 2]));
     p.abscol[j] = abs4(p.col[j]);
@@ -92,7 +92,7 @@ struct Lanes {
   const __m256d radius_a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(row_abs[0], splat(a.half[0])),
                                                        _mm256_mul_pd(row_abs[1], splat(a.half[1]))),
                                          _mm256_mul_pd(row_abs[2], splat(a.half[2])));
-  p.face_b = _mm256_sub_pd(_mm256_sub_pd(abs4(tb), gather(hb[0], hb[1], hb[2])), radius_a);
+  p.face_b = _mm256_sub_pd(_mm256_sub_pd(abs4(p.tb), gather(hb[0], hb[1], hb[2])), radius_a);
   return p;
 }
 
@@ -165,14 +165,9 @@ void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out)
 bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
                     LargestGap& out) {
   Lanes p = poseAndFaces(a, b);
-  fastEdges(a, b, p);
-  const __m256d vbound = splat(bound), vmin_length2 = splat(min_length2);
-  __m256d sure = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-  for (int j = 0; j < 3; ++j) {
-    sure = _mm256_and_pd(sure, _mm256_cmp_pd(abs4(p.gap[j]), vbound, _CMP_GT_OQ));
-    sure = _mm256_and_pd(sure, _mm256_cmp_pd(p.length2[j], vmin_length2, _CMP_GT_OQ));
-  }
-  if ((_mm256_movemask_pd(sure) & 0b0111) != 0b0111) return false;
+  _mm256_storeu_pd(out.t, p.t);
+  _mm256_storeu_pd(out.tb, p.tb);
+  for (int j = 0; j < 3; ++j) _mm256_storeu_pd(out.col[j], p.col[j]);
   // The first largest face gap: the comparisons are exact, so any order finds it (obb3.cpp runs
   // them in turn), and a face gap is never -0 (|t| - ha is +0 or non-zero, and so is the radius'
   // difference from it), so the largest value has the bits of the first face holding it.
@@ -182,15 +177,25 @@ bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, doub
   const int holding = (_mm256_movemask_pd(_mm256_cmp_pd(p.face_a, faces, _CMP_EQ_OQ)) & 0b0111) |
                       (_mm256_movemask_pd(_mm256_cmp_pd(p.face_b, faces, _CMP_EQ_OQ)) & 0b0111)
                           << 3;
+  fastEdges(a, b, p);
+  const __m256d vbound = splat(bound), vmin_length2 = splat(min_length2);
+  __m256d sure = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  for (int j = 0; j < 3; ++j) {
+    sure = _mm256_and_pd(sure, _mm256_cmp_pd(abs4(p.gap[j]), vbound, _CMP_GT_OQ));
+    sure = _mm256_and_pd(sure, _mm256_cmp_pd(p.length2[j], vmin_length2, _CMP_GT_OQ));
+  }
+  if ((_mm256_movemask_pd(sure) & 0b0111) != 0b0111) return false;
   const Candidates edge = largestEdge(p);
   // As obb3.cpp: the faces' winner enters with length2 = 1 and square face |face|.
   if (_mm256_cvtsd_f64(edge.square) >
       face * __builtin_fabs(face) * _mm256_cvtsd_f64(edge.length2)) {
     const __m128d length2 = _mm256_castpd256_pd128(edge.length2);
     const __m128d gap = _mm_div_sd(_mm256_castpd256_pd128(edge.gap), _mm_sqrt_sd(length2, length2));
-    out = {_mm_cvtsd_f64(gap), static_cast<int>(_mm256_cvtsd_f64(edge.axis))};
+    out.gap = _mm_cvtsd_f64(gap);
+    out.axis = static_cast<int>(_mm256_cvtsd_f64(edge.axis));
   } else {
-    out = {face, __builtin_ctz(static_cast<unsigned>(holding))};
+    out.gap = face;
+    out.axis = __builtin_ctz(static_cast<unsigned>(holding));
   }
   return true;
 }

@@ -32,11 +32,15 @@ void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out)
 struct LargestGap {
   double gap;  ///< The largest gap, metres.
   int axis;    ///< Its axis index (SatResult3::axis_index).
+  // The pose, for the winner's normal: bit for bit obb3.cpp's Pose3 (lane 3 of each is padding).
+  double t[4];       ///< a_k . d, d = cB - cA.
+  double tb[4];      ///< b_j . d.
+  double col[3][4];  ///< col[j][k] = r_kj = a_k . b_j.
 };
 
 /// collideObb3's largest gap, when every edge gap clears the filter: |gap| > bound and squared axis
-/// length > min_length2 (obb3.cpp, rootFreeBound and EdgeFilter). False, with nothing written,
-/// otherwise. Call only when geometry/batch_path says the CPU has AVX2.
+/// length > min_length2 (obb3.cpp, rootFreeBound and EdgeFilter). False otherwise, with only the
+/// pose written. Call only when geometry/batch_path says the CPU has AVX2.
 bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
                     LargestGap& out);
 
