@@ -280,11 +280,13 @@ struct FastEdges {
   return out;
 }
 
-// The world-frame unit axis of fast edge (i, j), pointing from A towards B. Pose: a Pose3 or
-// StoredPose.
+// The world-frame unit axis of fast edge axis 6 + 3i + j, pointing from A towards B. Pose: a Pose3
+// or StoredPose.
 template <class Pose>
-Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int i, int j) {
-  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int axis) {
+  // Unsigned, and the next indices by comparison: no signed division by 3 to correct.
+  const unsigned e = static_cast<unsigned>(axis - 6), i = e / 3, j = e % 3;
+  const unsigned i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
   const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
   const double along = p.tk(i2) * p.r(i1, j) - p.tk(i1) * p.r(i2, j);
   return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
@@ -407,7 +409,7 @@ struct StoredPose {
 // whose sign the pose's t (A's faces) or tb (B's faces) gives.
 template <class Pose>
 Eigen::Vector3d winningNormal(const Obb3& a, const Obb3& b, const Pose& p, int axis) {
-  if (axis >= 6) return fastEdgeNormal(a, p, (axis - 6) / 3, (axis - 6) % 3);
+  if (axis >= 6) return fastEdgeNormal(a, p, axis);
   if (axis < 3) {
     const Eigen::Vector3d n = a.rotation().col(axis);
     return p.tk(axis) < 0.0 ? Eigen::Vector3d(-n) : n;
@@ -477,7 +479,7 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     if (edge.square[0] > best * std::abs(best) * edge.length2[0]) {
       r.separation = edge.gap[0] / root(edge.length2[0]);
       r.axis_index = static_cast<int>(edge.axis[0]);
-      r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+      r.normal = fastEdgeNormal(a, p, r.axis_index);
       r.hit = r.separation <= 0.0;
       assert(isFinite(r));
       return r;
@@ -508,7 +510,7 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     }
     if (fast_winner || accurate_winner) {
       if (fast_winner) {
-        r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+        r.normal = fastEdgeNormal(a, p, r.axis_index);
       }
       r.hit = r.separation <= 0.0;
       assert(isFinite(r));
