@@ -426,25 +426,11 @@ obb3_detail::BoxNumbers numbersOf(const Obb3& box) {
 
 }  // namespace
 
-SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
-  assert(inDomain(a) && inDomain(b));
-#if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() != BatchPath::kPortable) {
-    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
-    obb3_detail::LargestGap largest;
-    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), rootFreeBound(filter),
-                                    filter.min_length2, largest)) {
-      SatResult3 r;
-      r.separation = largest.gap;
-      r.axis_index = largest.axis;
-      r.normal = winningNormal(a, b, StoredPose{largest}, largest.axis);
-      r.hit = r.separation <= 0.0;
-      assert(isFinite(r));
-      return r;
-    }
-    // Some edge gap lies within the bound: the SSE2 path below takes the edges one by one.
-  }
-#endif
+namespace {
+
+// collideObb3 on the SSE2 path, also where some edge gap lies within the bound. Not inlined, so
+// that the AVX2 path's caller keeps a small frame.
+[[gnu::noinline]] SatResult3 collideSse2(const Obb3& a, const Obb3& b) {
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
   double best = p.face_a.lo[0];
@@ -522,6 +508,30 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   r.hit = r.separation <= 0.0;
   assert(isFinite(r));
   return r;
+}
+
+}  // namespace
+
+SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
+  assert(inDomain(a) && inDomain(b));
+#if defined(CARDEMO_BATCH_AVX2)
+  if (batchPath() != BatchPath::kPortable) {
+    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
+    obb3_detail::LargestGap largest;
+    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), rootFreeBound(filter),
+                                    filter.min_length2, largest)) {
+      SatResult3 r;
+      r.separation = largest.gap;
+      r.axis_index = largest.axis;
+      r.normal = winningNormal(a, b, StoredPose{largest}, largest.axis);
+      r.hit = r.separation <= 0.0;
+      assert(isFinite(r));
+      return r;
+    }
+    // Some edge gap lies within the bound: the SSE2 path takes the edges one by one.
+  }
+#endif
+  return collideSse2(a, b);
 }
 
 bool overlapObb3(const Obb3& a, const Obb3& b) {
