@@ -201,18 +201,18 @@ template <int N, class F>
 struct EdgeFilter {
   double bound;        // on |gap times axis length|, metres
   double min_length2;  // floor on the squared axis length for a normalised fast gap
-  double scale;        // the pair's scale, metres
+  double scale;        // the pair's scale, metres (infinite with the bound)
 };
 
 [[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b,
                                                     const Eigen::Vector3d& d) {
   constexpr double kU = 0x1p-53;
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double phi = std::max(a.frameDefect(), b.frameDefect());
+  if (!(phi <= 0x1p-30)) return {kInf, kInf, kInf};
   // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
   const double scale =
       std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) + a.half.sum() + b.half.sum();
-  const double phi = std::max(a.frameDefect(), b.frameDefect());
-  if (!(phi <= 0x1p-30)) return {kInf, kInf, scale};
   const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
   return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
 }
