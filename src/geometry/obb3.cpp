@@ -223,11 +223,15 @@ struct EdgeFilter {
 // y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root and one
 // division remain, for the winner only, which reports gap / sqrt(length2) as before.
 //
-// Each product is within 2^-52 relative of the exact one while it is a normal number, so the
-// comparison can disagree with comparing normalised gaps only for two separations within a couple
-// of ulps of each other: which of those two axes wins (an exact tie of the products included) may
-// differ from normalising first, and the reported separation is then within a few ulps of the
-// other's. A positive candidate always beats a non-positive one, so the verdict is unchanged.
+// Ties: each product is within 2^-52 (relative) of its exact value and each normalised gap within
+// 2^-52 of its own, so the two ways of comparing can disagree only for two separations within a
+// few ulps of each other. There, and only there, the winner may differ from the one normalising
+// first picked: an exact tie of the normalised gaps can go to the later axis (the products differ
+// in their last bits), a tie of the products to the earlier one where the normalised gaps are an
+// ulp apart. Such near ties occur in symmetric set-ups (eighth turns on a grid, say); the reported
+// separation is the winner's own gap / sqrt(length2), so within an ulp or two of the other's, and
+// the normal is the winner's. A positive candidate always beats a non-positive one, so the
+// verdict is never affected.
 //
 // Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
 // < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
@@ -367,7 +371,8 @@ struct Candidates2 {
 // largestGapAvx2 runs too so that both paths give the same bits: for each i, edges (i, 0),
 // (i, 1), (i, 2) (lane i of column j's gaps), then those three winners in the order i = 0, 1, 2.
 // Every step keeps the earlier run of axes unless the later one's separation is strictly larger,
-// and every run is consecutive in axis order, so the first largest axis wins a tie.
+// and every run is consecutive in axis order, so the first largest axis wins a tie of the
+// products, as in a scan in axis order.
 [[gnu::always_inline]] inline Candidates2 largestEdge(const FastEdges& fast) {
   Candidates2 lo, hi;  // lanes i = 0, 1; lane i = 2
   staticFor<3>([&](auto jc) {
