@@ -533,7 +533,8 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
       assert(isFinite(r));
       return r;
     }
-    // Some edge gap lies within the bound: the SSE2 path takes the edges one by one.
+    // Some edge gap lies within the bound (or the scale is outside the root-free range): the SSE2
+    // path takes the edges one by one.
   }
 #endif
   return collideSse2(a, b);

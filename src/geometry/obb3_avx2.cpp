@@ -47,7 +47,7 @@ namespace {
 }
 
 // obb3.cpp's Pose3 and FastEdges, as registers: lane k of t is a_k . d, lane k of col[j] is
-// r_kj = a_k . b_j; lane j of face_b is the gap on B's face j.
+// r_kj = a_k . b_j; lane j of tb is b_j . d and of face_b the gap on B's face j.
 struct Lanes {
   __m256d t, tb, col[3], abscol[3], face_a, face_b;
   __m256d gap[3], length2[3];
