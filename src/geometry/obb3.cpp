@@ -223,26 +223,26 @@ struct EdgeFilter {
 // y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root and one
 // division remain, for the winner only, which reports gap / sqrt(length2) as before.
 //
-// Ties: each product is within 2^-52 (relative) of its exact value and each normalised gap within
-// 2^-52 of its own, so the two ways of comparing can disagree only for two separations within a
-// few ulps of each other. There, and only there, the winner may differ from the one normalising
-// first picked: an exact tie of the normalised gaps can go to the later axis (the products differ
-// in their last bits), a tie of the products to the earlier one where the normalised gaps are an
-// ulp apart. Such near ties occur in symmetric set-ups (eighth turns on a grid, say); the reported
-// separation is the winner's own gap / sqrt(length2), so within an ulp or two of the other's, and
-// the normal is the winner's. A positive candidate always beats a non-positive one, so the
-// verdict is never affected.
-//
 // Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
 // < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
 // 4 scale in magnitude (|t_k| and |along| at most 2.01 |d|_1, the radii at most 1.01 times the
 // half extents' sum). So for 2^-400 <= scale <= 2^400 no product exceeds 2^6 scale^2 <= 2^806,
-// and an edge's is at least 2^-112 scale^2 >= 2^-912, a normal number. A face's product that is
-// not a normal number (|gap| below about 2^-504) is below 2^-1022, far from the edge product it
-// is compared with, so their order stays right. The boxes' domain (kMaxCoordinate, half extents
-// down to zero) reaches beyond that range: such a pair takes the edge-by-edge loop.
+// and an edge's is at least 2^-112 scale^2 >= 2^-912, a normal number: each product is within
+// 2^-52 (relative) of its exact value. A face's product that is not a normal number (|gap| below
+// about 2^-504) is below 2^-1022, far from the edge product it is compared with. The boxes' domain
+// (kMaxCoordinate, half extents down to zero) reaches beyond that range: such a pair takes the
+// edge-by-edge loop.
 constexpr double kRootFreeMinScale = 0x1p-400;
 constexpr double kRootFreeMaxScale = 0x1p400;
+
+// A step of the comparison is certain when its two products differ by more than 2^-48 of the
+// first (a sign apart included): the exact separations then differ by more than 12 u (u = 2^-53),
+// and gap / sqrt(length2), within 2 u of its exact value, orders the two the same way, strictly.
+// When every step is certain, the winner is the axis that normalising every gap and scanning in
+// axis order picks (the tournament's runs are consecutive, and comparisons of doubles are
+// transitive), bit for bit; otherwise the gaps are normalised and scanned. So the result is always
+// the normalising one's, near ties included.
+using obb3_detail::kCertain;
 
 // The bound the common case needs every edge gap to clear: the filter's, or infinity (no edge
 // clears it) for a pair whose scale is outside the root-free comparison's range.
@@ -346,6 +346,25 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   best_index = larger ? index : best_index;
 }
 
+// The square root, correctly rounded (sqrtsd on SSE2; std::sqrt there adds an errno check).
+[[gnu::always_inline]] inline double root(double x) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+  return std::sqrt(x);
+#endif
+}
+
+// gap / sqrt(length2) lane by lane; on SSE2 one sqrtpd and one divpd, the same correctly rounded
+// operations as the scalar form, so the same bits either way.
+[[gnu::always_inline]] inline V2 normalised2(V2 gap, V2 length2) {
+#if defined(__SSE2__)
+  return gap / static_cast<V2>(_mm_sqrt_pd(length2));
+#else
+  return V2{gap[0] / std::sqrt(length2[0]), gap[1] / std::sqrt(length2[1])};
+#endif
+}
+
 // Root-free edge candidates, one per lane (see rootFreeBound): gap times axis length, squared axis
 // length, gap |gap|, and the axis index (SatResult3::axis_index) as a double.
 struct Candidates2 {
@@ -353,8 +372,12 @@ struct Candidates2 {
 };
 
 // Lane by lane the first largest of x then y: y only where its separation is strictly larger.
-[[gnu::always_inline]] inline Candidates2 firstLargest(const Candidates2& x, const Candidates2& y) {
-  const M2 y_wins = y.square * x.length2 > x.square * y.length2;
+// `doubtful` gains the lanes where the step is not certain (rootFreeBound, kCertain).
+[[gnu::always_inline]] inline Candidates2 firstLargest(const Candidates2& x, const Candidates2& y,
+                                                       M2& doubtful) {
+  const V2 y_side = y.square * x.length2, x_side = x.square * y.length2;
+  const M2 y_wins = y_side > x_side;
+  doubtful |= ~(abs2(y_side - x_side) > abs2(y_side) * V2{kCertain, kCertain});
   return {select2(y_wins, y.gap, x.gap), select2(y_wins, y.length2, x.length2),
           select2(y_wins, y.square, x.square), select2(y_wins, y.axis, x.axis)};
 }
@@ -367,14 +390,14 @@ struct Candidates2 {
           __builtin_shufflevector(c.axis, c.axis, 1, 1)};
 }
 
-// The first largest edge candidate, in lane 0. The tournament, which obb3_avx2.cpp's
-// largestGapAvx2 runs too so that both paths give the same bits: for each i, edges (i, 0),
-// (i, 1), (i, 2) (lane i of column j's gaps), then those three winners in the order i = 0, 1, 2.
-// Every step keeps the earlier run of axes unless the later one's separation is strictly larger,
-// and every run is consecutive in axis order, so the first largest axis wins a tie of the
-// products, as in a scan in axis order.
-[[gnu::always_inline]] inline Candidates2 largestEdge(const FastEdges& fast) {
-  Candidates2 lo, hi;  // lanes i = 0, 1; lane i = 2
+// The first largest edge candidate, in lane 0, and whether every step was certain. The tournament,
+// which obb3_avx2.cpp's largestGapAvx2 runs too: for each i, edges (i, 0), (i, 1), (i, 2) (lane i
+// of column j's gaps), then those three winners in the order i = 0, 1, 2. Every step keeps the
+// earlier run of axes unless the later one's separation is strictly larger, and every run is
+// consecutive in axis order, so with certain steps the first largest axis wins, as in a scan.
+[[gnu::always_inline]] inline Candidates2 largestEdge(const FastEdges& fast, bool& certain) {
+  Candidates2 lo, hi;  // lanes i = 0, 1; lane i = 2 (lane 1 is padding)
+  M2 doubtful_lo{0, 0}, doubtful_hi{0, 0}, doubtful_last{0, 0};
   staticFor<3>([&](auto jc) {
     constexpr int j = decltype(jc)::value;
     const V2 gap_lo = fast.gap[j].lo, gap_hi = fast.gap[j].hi;
@@ -386,20 +409,46 @@ struct Candidates2 {
       lo = column_lo;
       hi = column_hi;
     } else {
-      lo = firstLargest(lo, column_lo);
-      hi = firstLargest(hi, column_hi);
+      lo = firstLargest(lo, column_lo, doubtful_lo);
+      hi = firstLargest(hi, column_hi, doubtful_hi);
     }
   });
-  return firstLargest(firstLargest(lo, secondLane(lo)), hi);
+  const Candidates2 best =
+      firstLargest(firstLargest(lo, secondLane(lo), doubtful_last), hi, doubtful_last);
+  const M2 doubtful = doubtful_lo | ((doubtful_hi | doubtful_last) & M2{-1, 0});
+  certain = (doubtful[0] | doubtful[1]) == 0;
+  return best;
 }
 
-// The square root, correctly rounded (sqrtsd on SSE2; std::sqrt there adds an errno check).
-[[gnu::always_inline]] inline double root(double x) {
-#if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
-#else
-  return std::sqrt(x);
-#endif
+// The largest of the faces' winner (best, best_index) and the nine fast edge gaps, root-free: the
+// faces' winner enters with length2 = 1 and square best |best|. False, with nothing written, when a
+// step is not certain.
+[[gnu::always_inline]] inline bool largestRootFree(const FastEdges& fast, double& best,
+                                                   int& best_index) {
+  bool certain = false;
+  const Candidates2 edge = largestEdge(fast, certain);
+  const double edge_side = edge.square[0], face_side = best * std::abs(best) * edge.length2[0];
+  if (!certain || !(std::abs(edge_side - face_side) > kCertain * std::abs(edge_side))) return false;
+  if (edge_side > face_side) {
+    best = edge.gap[0] / root(edge.length2[0]);
+    best_index = static_cast<int>(edge.axis[0]);
+  }
+  return true;
+}
+
+// The same by normalising the nine gaps together, then picking in axis order.
+[[gnu::always_inline]] inline void largestNormalised(const FastEdges& fast, double& best,
+                                                     int& best_index) {
+  V3 g[3];
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    g[j] = {normalised2(fast.gap[j].lo, fast.length2[j].lo),
+            normalised2(fast.gap[j].hi, fast.length2[j].hi)};
+  });
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value, i = e / 3, j = e % 3;
+    pickLargest(lane<i>(g[j]), 6 + e, best, best_index);
+  });
 }
 
 // The pose entries largestGapAvx2 stores, as a Pose3 reads them.
@@ -449,7 +498,7 @@ namespace {
   const FastEdges fast = fastEdges(a, b, p);
   const EdgeFilter filter = edgeFilter(a, b, p.d);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
-  // candidates are the fast ones; they are compared without roots and without branches.
+  // candidates are the fast ones, compared without roots (rootFreeBound) where that is certain.
   const V2 bound{rootFreeBound(filter), rootFreeBound(filter)};
   const V2 min_length2{filter.min_length2, filter.min_length2};
   M2 sure_lo = abs2(fast.gap[0].lo) > bound, sure_hi = abs2(fast.gap[0].hi) > bound;
@@ -462,21 +511,20 @@ namespace {
     sure_lo &= fast.length2[j].lo > min_length2;
     sure_hi &= fast.length2[j].hi > min_length2;
   });
-  r.separation = best;
-  r.axis_index = best_index;
   if (all3(sure_lo, sure_hi)) {
-    const Candidates2 edge = largestEdge(fast);
-    // The faces' winner enters with length2 = 1 and square best |best|.
-    if (edge.square[0] > best * std::abs(best) * edge.length2[0]) {
-      r.separation = edge.gap[0] / root(edge.length2[0]);
-      r.axis_index = static_cast<int>(edge.axis[0]);
-      r.normal = fastEdgeNormal(a, p, r.axis_index);
-      r.hit = r.separation <= 0.0;
+    if (!largestRootFree(fast, best, best_index)) largestNormalised(fast, best, best_index);
+    r.separation = best;
+    r.axis_index = best_index;
+    if (best_index >= 6) {
+      r.normal = fastEdgeNormal(a, p, best_index);
+      r.hit = best <= 0.0;
       assert(isFinite(r));
       return r;
     }
   } else {
     // Some edge gap lies within the bound: edge by edge, the accurate axis where it does.
+    r.separation = best;
+    r.axis_index = best_index;
     bool fast_winner = false;
     bool accurate_winner = false;
     for (int e = 0; e < 9; ++e) {

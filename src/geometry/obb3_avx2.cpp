@@ -119,10 +119,16 @@ struct Candidates {
   __m256d gap, length2, square, axis;
 };
 
-// Lane by lane the first largest of x then y, as obb3.cpp's firstLargest.
-[[gnu::always_inline]] inline Candidates firstLargest(const Candidates& x, const Candidates& y) {
-  const __m256d y_wins = _mm256_cmp_pd(_mm256_mul_pd(y.square, x.length2),
-                                       _mm256_mul_pd(x.square, y.length2), _CMP_GT_OQ);
+// Lane by lane the first largest of x then y, as obb3.cpp's firstLargest; `doubtful` gains the
+// lanes where the step is not certain.
+[[gnu::always_inline]] inline Candidates firstLargest(const Candidates& x, const Candidates& y,
+                                                      __m256d& doubtful) {
+  const __m256d y_side = _mm256_mul_pd(y.square, x.length2);
+  const __m256d x_side = _mm256_mul_pd(x.square, y.length2);
+  const __m256d y_wins = _mm256_cmp_pd(y_side, x_side, _CMP_GT_OQ);
+  const __m256d margin = _mm256_mul_pd(abs4(y_side), splat(kCertain));
+  doubtful = _mm256_or_pd(doubtful,
+                          _mm256_cmp_pd(abs4(_mm256_sub_pd(y_side, x_side)), margin, _CMP_NGT_UQ));
   return {_mm256_blendv_pd(x.gap, y.gap, y_wins), _mm256_blendv_pd(x.length2, y.length2, y_wins),
           _mm256_blendv_pd(x.square, y.square, y_wins), _mm256_blendv_pd(x.axis, y.axis, y_wins)};
 }
@@ -141,14 +147,52 @@ struct Candidates {
 
 // obb3.cpp's largestEdge, the same tournament: lane by lane over the columns j, then lanes 0, 1
 // and 2 in turn. The winner is in lane 0.
-[[gnu::always_inline]] inline Candidates largestEdge(const Lanes& p) {
+[[gnu::always_inline]] inline Candidates largestEdge(const Lanes& p, bool& certain) {
   Candidates c[3];
   for (int j = 0; j < 3; ++j) {
     c[j] = {p.gap[j], p.length2[j], _mm256_mul_pd(p.gap[j], abs4(p.gap[j])),
             _mm256_setr_pd(6.0 + j, 9.0 + j, 12.0 + j, 12.0 + j)};
   }
-  const Candidates lanes = firstLargest(firstLargest(c[0], c[1]), c[2]);
-  return firstLargest(firstLargest(lanes, secondLane(lanes)), thirdLane(lanes));
+  __m256d doubtful_lanes = _mm256_setzero_pd(), doubtful_last = _mm256_setzero_pd();
+  const Candidates lanes =
+      firstLargest(firstLargest(c[0], c[1], doubtful_lanes), c[2], doubtful_lanes);
+  const Candidates best = firstLargest(firstLargest(lanes, secondLane(lanes), doubtful_last),
+                                       thirdLane(lanes), doubtful_last);
+  certain = ((_mm256_movemask_pd(doubtful_lanes) & 0b0111) |
+             (_mm256_movemask_pd(doubtful_last) & 0b0001)) == 0;
+  return best;
+}
+
+// obb3.cpp's largestRootFree: the faces' winner (best, best_axis) against the edges' root-free.
+[[gnu::always_inline]] inline bool largestRootFree(const Lanes& p, double& best, int& best_axis) {
+  bool certain = false;
+  const Candidates edge = largestEdge(p, certain);
+  const double edge_side = _mm256_cvtsd_f64(edge.square);
+  const double face_side = best * __builtin_fabs(best) * _mm256_cvtsd_f64(edge.length2);
+  if (!certain || !(__builtin_fabs(edge_side - face_side) > kCertain * __builtin_fabs(edge_side))) {
+    return false;
+  }
+  if (edge_side > face_side) {
+    const __m128d length2 = _mm256_castpd256_pd128(edge.length2);
+    const __m128d gap = _mm_div_sd(_mm256_castpd256_pd128(edge.gap), _mm_sqrt_sd(length2, length2));
+    best = _mm_cvtsd_f64(gap);
+    best_axis = static_cast<int>(_mm256_cvtsd_f64(edge.axis));
+  }
+  return true;
+}
+
+// obb3.cpp's largestNormalised: the nine gaps normalised, then picked in axis order.
+[[gnu::always_inline]] inline void largestNormalised(const Lanes& p, double& best, int& best_axis) {
+  alignas(32) double g[3][4];
+  for (int j = 0; j < 3; ++j) {
+    _mm256_store_pd(g[j], _mm256_div_pd(p.gap[j], _mm256_sqrt_pd(p.length2[j])));
+  }
+  for (int e = 0; e < 9; ++e) {
+    const double gap = g[e % 3][e / 3];
+    const bool larger = gap > best;
+    best = larger ? gap : best;
+    best_axis = larger ? 6 + e : best_axis;
+  }
 }
 
 }  // namespace
@@ -185,18 +229,11 @@ bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, doub
     sure = _mm256_and_pd(sure, _mm256_cmp_pd(p.length2[j], vmin_length2, _CMP_GT_OQ));
   }
   if ((_mm256_movemask_pd(sure) & 0b0111) != 0b0111) return false;
-  const Candidates edge = largestEdge(p);
-  // As obb3.cpp: the faces' winner enters with length2 = 1 and square face |face|.
-  if (_mm256_cvtsd_f64(edge.square) >
-      face * __builtin_fabs(face) * _mm256_cvtsd_f64(edge.length2)) {
-    const __m128d length2 = _mm256_castpd256_pd128(edge.length2);
-    const __m128d gap = _mm_div_sd(_mm256_castpd256_pd128(edge.gap), _mm_sqrt_sd(length2, length2));
-    out.gap = _mm_cvtsd_f64(gap);
-    out.axis = static_cast<int>(_mm256_cvtsd_f64(edge.axis));
-  } else {
-    out.gap = face;
-    out.axis = __builtin_ctz(static_cast<unsigned>(holding));
-  }
+  double best = face;
+  int best_axis = __builtin_ctz(static_cast<unsigned>(holding));
+  if (!largestRootFree(p, best, best_axis)) largestNormalised(p, best, best_axis);
+  out.gap = best;
+  out.axis = best_axis;
   return true;
 }
 
