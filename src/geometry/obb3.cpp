@@ -201,6 +201,7 @@ template <int N, class F>
 struct EdgeFilter {
   double bound;        // on |gap times axis length|, metres
   double min_length2;  // floor on the squared axis length for a normalised fast gap
+  double scale;        // the pair's scale, metres (infinite with the bound)
 };
 
 [[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b,
@@ -208,12 +209,46 @@ struct EdgeFilter {
   constexpr double kU = 0x1p-53;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const double phi = std::max(a.frameDefect(), b.frameDefect());
-  if (!(phi <= 0x1p-30)) return {kInf, kInf};
+  if (!(phi <= 0x1p-30)) return {kInf, kInf, kInf};
   // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
   const double scale =
       std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) + a.half.sum() + b.half.sum();
   const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
-  return {(32.0 * kU + 6.0 * phi) * scale, root * root};
+  return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
+}
+
+// collideObb3's common case compares candidate separations without roots (the batch kernels'
+// Candidate, batch_kernels.hpp): gap / sqrt(length2) is carried as gap, length2 and
+// square = gap |gap|, and as z -> z|z| is increasing, y's separation is the larger iff
+// y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root and one
+// division remain, for the winner only, which reports gap / sqrt(length2) as before.
+//
+// Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
+// < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
+// 4 scale in magnitude (|t_k| and |along| at most 2.01 |d|_1, the radii at most 1.01 times the
+// half extents' sum). So for 2^-400 <= scale <= 2^400 no product exceeds 2^6 scale^2 <= 2^806,
+// and an edge's is at least 2^-112 scale^2 >= 2^-912, a normal number: each product is within
+// 2^-52 (relative) of its exact value. A face's product that is not a normal number (|gap| below
+// about 2^-504) is below 2^-1022, far from the edge product it is compared with. The boxes' domain
+// (kMaxCoordinate, half extents down to zero) reaches beyond that range: such a pair takes the
+// edge-by-edge loop.
+constexpr double kRootFreeMinScale = 0x1p-400;
+constexpr double kRootFreeMaxScale = 0x1p400;
+
+// A step of the comparison is certain when its two products differ by more than 2^-48 of the
+// first (a sign apart included): the exact separations then differ by more than 12 u (u = 2^-53),
+// and gap / sqrt(length2), within 2 u of its exact value, orders the two the same way, strictly.
+// When every step is certain, the winner is the axis that normalising every gap and scanning in
+// axis order picks (the tournament's runs are consecutive, and comparisons of doubles are
+// transitive), bit for bit; otherwise the gaps are normalised and scanned. So the result is always
+// the normalising one's, near ties included.
+using obb3_detail::kCertain;
+
+// The bound the common case needs every edge gap to clear: the filter's, or infinity (no edge
+// clears it) for a pair whose scale is outside the root-free comparison's range.
+[[gnu::always_inline]] inline double rootFreeBound(const EdgeFilter& filter) {
+  const bool in_range = filter.scale >= kRootFreeMinScale && filter.scale <= kRootFreeMaxScale;
+  return in_range ? filter.bound : std::numeric_limits<double>::infinity();
 }
 
 // Edge axes a_i x b_j in A's frame, gap times axis length and squared length: lane i of gap[j] and
@@ -249,11 +284,13 @@ struct FastEdges {
   return out;
 }
 
-// The world-frame unit axis of fast edge (i, j), pointing from A towards B. Pose: a Pose3 or
-// PoseScalars.
+// The world-frame unit axis of fast edge axis 6 + 3i + j, pointing from A towards B. Pose: a Pose3
+// or StoredPose.
 template <class Pose>
-Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int i, int j) {
-  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int axis) {
+  // Unsigned, and the next indices by comparison: no signed division by 3 to correct.
+  const unsigned e = static_cast<unsigned>(axis - 6), i = e / 3, j = e % 3;
+  const unsigned i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
   const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
   const double along = p.tk(i2) * p.r(i1, j) - p.tk(i1) * p.r(i2, j);
   return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
@@ -290,21 +327,15 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   return true;
 }
 
-// gap / sqrt(length2) lane by lane; on SSE2 one sqrtpd and one divpd, the same correctly rounded
-// operations as the scalar form, so the same bits either way.
-[[gnu::always_inline]] inline V2 normalised2(V2 gap, V2 length2) {
-#if defined(__SSE2__)
-  return gap / static_cast<V2>(_mm_sqrt_pd(length2));
-#else
-  return V2{gap[0] / std::sqrt(length2[0]), gap[1] / std::sqrt(length2[1])};
-#endif
+// Lane by lane x where `take_x`, else y.
+[[gnu::always_inline]] inline V2 select2(M2 take_x, V2 x, V2 y) {
+  return reinterpret_cast<V2>((take_x & reinterpret_cast<M2>(x)) |
+                              (~take_x & reinterpret_cast<M2>(y)));
 }
 
 // Lane by lane max(u, v) (u where u > v).
 [[gnu::always_inline]] inline V2 max2(V2 u, V2 v) {
-  const M2 take_u = u > v;
-  return reinterpret_cast<V2>((take_u & reinterpret_cast<M2>(u)) |
-                              (~take_u & reinterpret_cast<M2>(v)));
+  return select2(u > v, u, v);
 }
 
 // The first largest of the fifteen candidate gaps (faces, then edges 3i + j): `!(g > best)` keeps
@@ -315,24 +346,124 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   best_index = larger ? index : best_index;
 }
 
-// Single entries of Pose3 computed on demand, bit for bit as relativePose forms them (lane k of
-// t and of col[j] is dot3 of A's column k with d and b_j).
-struct PoseScalars {
-  const Obb3& a;
-  const Obb3& b;
-  Eigen::Vector3d d;
-  [[nodiscard]] double r(int k, int j) const {
-    return dot3(a.rotation().data() + 3 * k, b.rotation().data() + 3 * j);
+// The square root, correctly rounded (sqrtsd on SSE2; std::sqrt there adds an errno check).
+[[gnu::always_inline]] inline double root(double x) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+  return std::sqrt(x);
+#endif
+}
+
+// gap / sqrt(length2) lane by lane; on SSE2 one sqrtpd and one divpd, the same correctly rounded
+// operations as the scalar form, so the same bits either way.
+[[gnu::always_inline]] inline V2 normalised2(V2 gap, V2 length2) {
+#if defined(__SSE2__)
+  return gap / static_cast<V2>(_mm_sqrt_pd(length2));
+#else
+  return V2{gap[0] / std::sqrt(length2[0]), gap[1] / std::sqrt(length2[1])};
+#endif
+}
+
+// Root-free edge candidates, one per lane (see rootFreeBound): gap times axis length, squared axis
+// length, gap |gap|, and the axis index (SatResult3::axis_index) as a double.
+struct Candidates2 {
+  V2 gap, length2, square, axis;
+};
+
+// Lane by lane the first largest of x then y: y only where its separation is strictly larger.
+// `doubtful` gains the lanes where the step is not certain (rootFreeBound, kCertain).
+[[gnu::always_inline]] inline Candidates2 firstLargest(const Candidates2& x, const Candidates2& y,
+                                                       M2& doubtful) {
+  const V2 y_side = y.square * x.length2, x_side = x.square * y.length2;
+  const M2 y_wins = y_side > x_side;
+  doubtful |= ~(abs2(y_side - x_side) > abs2(y_side) * V2{kCertain, kCertain});
+  return {select2(y_wins, y.gap, x.gap), select2(y_wins, y.length2, x.length2),
+          select2(y_wins, y.square, x.square), select2(y_wins, y.axis, x.axis)};
+}
+
+// Lane 1 of every field in lane 0.
+[[gnu::always_inline]] inline Candidates2 secondLane(const Candidates2& c) {
+  return {__builtin_shufflevector(c.gap, c.gap, 1, 1),
+          __builtin_shufflevector(c.length2, c.length2, 1, 1),
+          __builtin_shufflevector(c.square, c.square, 1, 1),
+          __builtin_shufflevector(c.axis, c.axis, 1, 1)};
+}
+
+// The first largest edge candidate, in lane 0, and whether every step was certain. The tournament,
+// which obb3_avx2.cpp's largestGapAvx2 runs too: for each i, edges (i, 0), (i, 1), (i, 2) (lane i
+// of column j's gaps), then those three winners in the order i = 0, 1, 2. Every step keeps the
+// earlier run of axes unless the later one's separation is strictly larger, and every run is
+// consecutive in axis order, so with certain steps the first largest axis wins, as in a scan.
+[[gnu::always_inline]] inline Candidates2 largestEdge(const FastEdges& fast, bool& certain) {
+  Candidates2 lo, hi;  // lanes i = 0, 1; lane i = 2 (lane 1 is padding)
+  M2 doubtful_lo{0, 0}, doubtful_hi{0, 0}, doubtful_last{0, 0};
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    const V2 gap_lo = fast.gap[j].lo, gap_hi = fast.gap[j].hi;
+    const Candidates2 column_lo{gap_lo, fast.length2[j].lo, gap_lo * abs2(gap_lo),
+                                V2{6.0 + j, 9.0 + j}};
+    const Candidates2 column_hi{gap_hi, fast.length2[j].hi, gap_hi * abs2(gap_hi),
+                                V2{12.0 + j, 12.0 + j}};
+    if constexpr (j == 0) {
+      lo = column_lo;
+      hi = column_hi;
+    } else {
+      lo = firstLargest(lo, column_lo, doubtful_lo);
+      hi = firstLargest(hi, column_hi, doubtful_hi);
+    }
+  });
+  const Candidates2 best =
+      firstLargest(firstLargest(lo, secondLane(lo), doubtful_last), hi, doubtful_last);
+  const M2 doubtful = doubtful_lo | ((doubtful_hi | doubtful_last) & M2{-1, 0});
+  certain = (doubtful[0] | doubtful[1]) == 0;
+  return best;
+}
+
+// The largest of the faces' winner (best, best_index) and the nine fast edge gaps, root-free: the
+// faces' winner enters with length2 = 1 and square best |best|. False, with nothing written, when a
+// step is not certain.
+[[gnu::always_inline]] inline bool largestRootFree(const FastEdges& fast, double& best,
+                                                   int& best_index) {
+  bool certain = false;
+  const Candidates2 edge = largestEdge(fast, certain);
+  const double edge_side = edge.square[0], face_side = best * std::abs(best) * edge.length2[0];
+  if (!certain || !(std::abs(edge_side - face_side) > kCertain * std::abs(edge_side))) return false;
+  if (edge_side > face_side) {
+    best = edge.gap[0] / root(edge.length2[0]);
+    best_index = static_cast<int>(edge.axis[0]);
   }
-  [[nodiscard]] double tk(int k) const { return dot3(a.rotation().data() + 3 * k, d.data()); }
-  [[nodiscard]] double tbk(int j) const { return dot3(b.rotation().data() + 3 * j, d.data()); }
+  return true;
+}
+
+// The same by normalising the nine gaps together, then picking in axis order.
+[[gnu::always_inline]] inline void largestNormalised(const FastEdges& fast, double& best,
+                                                     int& best_index) {
+  V3 g[3];
+  staticFor<3>([&](auto jc) {
+    constexpr int j = decltype(jc)::value;
+    g[j] = {normalised2(fast.gap[j].lo, fast.length2[j].lo),
+            normalised2(fast.gap[j].hi, fast.length2[j].hi)};
+  });
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value, i = e / 3, j = e % 3;
+    pickLargest(lane<i>(g[j]), 6 + e, best, best_index);
+  });
+}
+
+// The pose entries largestGapAvx2 stores, as a Pose3 reads them.
+struct StoredPose {
+  const obb3_detail::LargestGap& g;
+  [[nodiscard]] double r(int k, int j) const { return g.col[j][k]; }
+  [[nodiscard]] double tk(int k) const { return g.t[k]; }
+  [[nodiscard]] double tbk(int j) const { return g.tb[j]; }
 };
 
 // The normal of the winning axis, pointing from A towards B: a fast edge axis, or a stored column
 // whose sign the pose's t (A's faces) or tb (B's faces) gives.
 template <class Pose>
 Eigen::Vector3d winningNormal(const Obb3& a, const Obb3& b, const Pose& p, int axis) {
-  if (axis >= 6) return fastEdgeNormal(a, p, (axis - 6) / 3, (axis - 6) % 3);
+  if (axis >= 6) return fastEdgeNormal(a, p, axis);
   if (axis < 3) {
     const Eigen::Vector3d n = a.rotation().col(axis);
     return p.tk(axis) < 0.0 ? Eigen::Vector3d(-n) : n;
@@ -349,26 +480,11 @@ obb3_detail::BoxNumbers numbersOf(const Obb3& box) {
 
 }  // namespace
 
-SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
-  assert(inDomain(a) && inDomain(b));
-#if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() != BatchPath::kPortable) {
-    const PoseScalars pose{a, b, b.center - a.center};
-    const EdgeFilter filter = edgeFilter(a, b, pose.d);
-    obb3_detail::LargestGap largest;
-    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), filter.bound, filter.min_length2,
-                                    largest)) {
-      SatResult3 r;
-      r.separation = largest.gap;
-      r.axis_index = largest.axis;
-      r.normal = winningNormal(a, b, pose, largest.axis);
-      r.hit = r.separation <= 0.0;
-      assert(isFinite(r));
-      return r;
-    }
-    // Some edge gap lies within the bound: the SSE2 path below takes the edges one by one.
-  }
-#endif
+namespace {
+
+// collideObb3 on the SSE2 path, also where some edge gap lies within the bound. Not inlined, so
+// that the AVX2 path's caller keeps a small frame.
+[[gnu::noinline]] SatResult3 collideSse2(const Obb3& a, const Obb3& b) {
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
   double best = p.face_a.lo[0];
@@ -382,8 +498,8 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   const FastEdges fast = fastEdges(a, b, p);
   const EdgeFilter filter = edgeFilter(a, b, p.d);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
-  // candidates are the fast ones; they are normalised together and compared without branches.
-  const V2 bound{filter.bound, filter.bound};
+  // candidates are the fast ones, compared without roots (rootFreeBound) where that is certain.
+  const V2 bound{rootFreeBound(filter), rootFreeBound(filter)};
   const V2 min_length2{filter.min_length2, filter.min_length2};
   M2 sure_lo = abs2(fast.gap[0].lo) > bound, sure_hi = abs2(fast.gap[0].hi) > bound;
   staticFor<3>([&](auto jc) {
@@ -396,20 +512,11 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     sure_hi &= fast.length2[j].hi > min_length2;
   });
   if (all3(sure_lo, sure_hi)) {
-    V3 g[3];
-    staticFor<3>([&](auto jc) {
-      constexpr int j = decltype(jc)::value;
-      g[j] = {normalised2(fast.gap[j].lo, fast.length2[j].lo),
-              normalised2(fast.gap[j].hi, fast.length2[j].hi)};
-    });
-    staticFor<9>([&](auto ec) {
-      constexpr int e = decltype(ec)::value, i = e / 3, j = e % 3;
-      pickLargest(lane<i>(g[j]), 6 + e, best, best_index);
-    });
+    if (!largestRootFree(fast, best, best_index)) largestNormalised(fast, best, best_index);
     r.separation = best;
     r.axis_index = best_index;
     if (best_index >= 6) {
-      r.normal = fastEdgeNormal(a, p, (best_index - 6) / 3, (best_index - 6) % 3);
+      r.normal = fastEdgeNormal(a, p, best_index);
       r.hit = best <= 0.0;
       assert(isFinite(r));
       return r;
@@ -442,7 +549,7 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
     }
     if (fast_winner || accurate_winner) {
       if (fast_winner) {
-        r.normal = fastEdgeNormal(a, p, (r.axis_index - 6) / 3, (r.axis_index - 6) % 3);
+        r.normal = fastEdgeNormal(a, p, r.axis_index);
       }
       r.hit = r.separation <= 0.0;
       assert(isFinite(r));
@@ -454,6 +561,31 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   r.hit = r.separation <= 0.0;
   assert(isFinite(r));
   return r;
+}
+
+}  // namespace
+
+SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
+  assert(inDomain(a) && inDomain(b));
+#if defined(CARDEMO_BATCH_AVX2)
+  if (batchPath() != BatchPath::kPortable) {
+    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
+    obb3_detail::LargestGap largest;
+    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), rootFreeBound(filter),
+                                    filter.min_length2, largest)) {
+      SatResult3 r;
+      r.separation = largest.gap;
+      r.axis_index = largest.axis;
+      r.normal = winningNormal(a, b, StoredPose{largest}, largest.axis);
+      r.hit = r.separation <= 0.0;
+      assert(isFinite(r));
+      return r;
+    }
+    // Some edge gap lies within the bound (or the scale is outside the root-free range): the SSE2
+    // path takes the edges one by one.
+  }
+#endif
+  return collideSse2(a, b);
 }
 
 bool overlapObb3(const Obb3& a, const Obb3& b) {

@@ -47,9 +47,9 @@ namespace {
 }
 
 // obb3.cpp's Pose3 and FastEdges, as registers: lane k of t is a_k . d, lane k of col[j] is
-// r_kj = a_k . b_j; lane j of face_b is the gap on B's face j.
+// r_kj = a_k . b_j; lane j of tb is b_j . d and of face_b the gap on B's face j.
 struct Lanes {
-  __m256d t, col[3], abscol[3], face_a, face_b;
+  __m256d t, tb, col[3], abscol[3], face_a, face_b;
   __m256d gap[3], length2[3];
 };
 
@@ -71,7 +71,7 @@ struct Lanes {
                          _mm256_mul_pd(z, w));
   };
   p.t = dotColumns(ax, ay, az, vdx, vdy, vdz);
-  const __m256d tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
+  p.tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
   for (int j = 0; j < 3; ++j) {
     p.col[j] = dotColumns(ax, ay, az, splat(rb[3 * j]), splat(rb[3 * j + 1]), splat(rb[3 * j + 2]));
     p.abscol[j] = abs4(p.col[j]);
@@ -92,7 +92,7 @@ struct Lanes {
   const __m256d radius_a = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(row_abs[0], splat(a.half[0])),
                                                        _mm256_mul_pd(row_abs[1], splat(a.half[1]))),
                                          _mm256_mul_pd(row_abs[2], splat(a.half[2])));
-  p.face_b = _mm256_sub_pd(_mm256_sub_pd(abs4(tb), gather(hb[0], hb[1], hb[2])), radius_a);
+  p.face_b = _mm256_sub_pd(_mm256_sub_pd(abs4(p.tb), gather(hb[0], hb[1], hb[2])), radius_a);
   return p;
 }
 
@@ -114,6 +114,87 @@ struct Lanes {
   }
 }
 
+// obb3.cpp's Candidates2: root-free edge candidates, one per lane, the axis index as a double.
+struct Candidates {
+  __m256d gap, length2, square, axis;
+};
+
+// Lane by lane the first largest of x then y, as obb3.cpp's firstLargest; `doubtful` gains the
+// lanes where the step is not certain.
+[[gnu::always_inline]] inline Candidates firstLargest(const Candidates& x, const Candidates& y,
+                                                      __m256d& doubtful) {
+  const __m256d y_side = _mm256_mul_pd(y.square, x.length2);
+  const __m256d x_side = _mm256_mul_pd(x.square, y.length2);
+  const __m256d y_wins = _mm256_cmp_pd(y_side, x_side, _CMP_GT_OQ);
+  const __m256d margin = _mm256_mul_pd(abs4(y_side), splat(kCertain));
+  doubtful = _mm256_or_pd(doubtful,
+                          _mm256_cmp_pd(abs4(_mm256_sub_pd(y_side, x_side)), margin, _CMP_NGT_UQ));
+  return {_mm256_blendv_pd(x.gap, y.gap, y_wins), _mm256_blendv_pd(x.length2, y.length2, y_wins),
+          _mm256_blendv_pd(x.square, y.square, y_wins), _mm256_blendv_pd(x.axis, y.axis, y_wins)};
+}
+
+// Lane 1 of every field in lane 0 (the other lanes are not read).
+[[gnu::always_inline]] inline Candidates secondLane(const Candidates& c) {
+  return {_mm256_permute_pd(c.gap, 0b0101), _mm256_permute_pd(c.length2, 0b0101),
+          _mm256_permute_pd(c.square, 0b0101), _mm256_permute_pd(c.axis, 0b0101)};
+}
+
+// Lane 2 of every field in lane 0 (the other lanes are not read).
+[[gnu::always_inline]] inline Candidates thirdLane(const Candidates& c) {
+  const auto high = [](__m256d v) { return _mm256_permute2f128_pd(v, v, 0x01); };
+  return {high(c.gap), high(c.length2), high(c.square), high(c.axis)};
+}
+
+// obb3.cpp's largestEdge, the same tournament: lane by lane over the columns j, then lanes 0, 1
+// and 2 in turn. The winner is in lane 0.
+[[gnu::always_inline]] inline Candidates largestEdge(const Lanes& p, bool& certain) {
+  Candidates c[3];
+  for (int j = 0; j < 3; ++j) {
+    c[j] = {p.gap[j], p.length2[j], _mm256_mul_pd(p.gap[j], abs4(p.gap[j])),
+            _mm256_setr_pd(6.0 + j, 9.0 + j, 12.0 + j, 12.0 + j)};
+  }
+  __m256d doubtful_lanes = _mm256_setzero_pd(), doubtful_last = _mm256_setzero_pd();
+  const Candidates lanes =
+      firstLargest(firstLargest(c[0], c[1], doubtful_lanes), c[2], doubtful_lanes);
+  const Candidates best = firstLargest(firstLargest(lanes, secondLane(lanes), doubtful_last),
+                                       thirdLane(lanes), doubtful_last);
+  certain = ((_mm256_movemask_pd(doubtful_lanes) & 0b0111) |
+             (_mm256_movemask_pd(doubtful_last) & 0b0001)) == 0;
+  return best;
+}
+
+// obb3.cpp's largestRootFree: the faces' winner (best, best_axis) against the edges' root-free.
+[[gnu::always_inline]] inline bool largestRootFree(const Lanes& p, double& best, int& best_axis) {
+  bool certain = false;
+  const Candidates edge = largestEdge(p, certain);
+  const double edge_side = _mm256_cvtsd_f64(edge.square);
+  const double face_side = best * __builtin_fabs(best) * _mm256_cvtsd_f64(edge.length2);
+  if (!certain || !(__builtin_fabs(edge_side - face_side) > kCertain * __builtin_fabs(edge_side))) {
+    return false;
+  }
+  if (edge_side > face_side) {
+    const __m128d length2 = _mm256_castpd256_pd128(edge.length2);
+    const __m128d gap = _mm_div_sd(_mm256_castpd256_pd128(edge.gap), _mm_sqrt_sd(length2, length2));
+    best = _mm_cvtsd_f64(gap);
+    best_axis = static_cast<int>(_mm256_cvtsd_f64(edge.axis));
+  }
+  return true;
+}
+
+// obb3.cpp's largestNormalised: the nine gaps normalised, then picked in axis order.
+[[gnu::always_inline]] inline void largestNormalised(const Lanes& p, double& best, int& best_axis) {
+  alignas(32) double g[3][4];
+  for (int j = 0; j < 3; ++j) {
+    _mm256_store_pd(g[j], _mm256_div_pd(p.gap[j], _mm256_sqrt_pd(p.length2[j])));
+  }
+  for (int e = 0; e < 9; ++e) {
+    const double gap = g[e % 3][e / 3];
+    const bool larger = gap > best;
+    best = larger ? gap : best;
+    best_axis = larger ? 6 + e : best_axis;
+  }
+}
+
 }  // namespace
 
 void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out) {
@@ -128,6 +209,18 @@ void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out)
 bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
                     LargestGap& out) {
   Lanes p = poseAndFaces(a, b);
+  _mm256_storeu_pd(out.t, p.t);
+  _mm256_storeu_pd(out.tb, p.tb);
+  for (int j = 0; j < 3; ++j) _mm256_storeu_pd(out.col[j], p.col[j]);
+  // The first largest face gap: the comparisons are exact, so any order finds it (obb3.cpp runs
+  // them in turn), and a face gap is never -0 (|t| - ha is +0 or non-zero, and so is the radius'
+  // difference from it), so the largest value has the bits of the first face holding it.
+  const double face =
+      largestLane(_mm256_max_pd(withoutPadding(p.face_a), withoutPadding(p.face_b)));
+  const __m256d faces = splat(face);
+  const int holding = (_mm256_movemask_pd(_mm256_cmp_pd(p.face_a, faces, _CMP_EQ_OQ)) & 0b0111) |
+                      (_mm256_movemask_pd(_mm256_cmp_pd(p.face_b, faces, _CMP_EQ_OQ)) & 0b0111)
+                          << 3;
   fastEdges(a, b, p);
   const __m256d vbound = splat(bound), vmin_length2 = splat(min_length2);
   __m256d sure = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
@@ -136,23 +229,11 @@ bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, doub
     sure = _mm256_and_pd(sure, _mm256_cmp_pd(p.length2[j], vmin_length2, _CMP_GT_OQ));
   }
   if ((_mm256_movemask_pd(sure) & 0b0111) != 0b0111) return false;
-  alignas(32) double faces[2][4], g[3][4];
-  _mm256_store_pd(faces[0], p.face_a);
-  _mm256_store_pd(faces[1], p.face_b);
-  for (int j = 0; j < 3; ++j) {
-    _mm256_store_pd(g[j], _mm256_div_pd(p.gap[j], _mm256_sqrt_pd(p.length2[j])));
-  }
-  // The first largest, faces then edges 3i + j, as obb3.cpp's pickLargest chain.
-  double best = faces[0][0];
-  int best_axis = 0;
-  const auto pick = [&best, &best_axis](double gap, int axis) {
-    const bool larger = gap > best;
-    best = larger ? gap : best;
-    best_axis = larger ? axis : best_axis;
-  };
-  for (int k = 1; k < 6; ++k) pick(faces[k / 3][k % 3], k);
-  for (int e = 0; e < 9; ++e) pick(g[e % 3][e / 3], 6 + e);
-  out = {best, best_axis};
+  double best = face;
+  int best_axis = __builtin_ctz(static_cast<unsigned>(holding));
+  if (!largestRootFree(p, best, best_axis)) largestNormalised(p, best, best_axis);
+  out.gap = best;
+  out.axis = best_axis;
   return true;
 }
 

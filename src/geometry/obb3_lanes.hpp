@@ -26,16 +26,26 @@ struct OverlapGaps {
 /// overlapObb3's face and fast edge gaps. Call only when geometry/batch_path says the CPU has AVX2.
 void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out);
 
-/// collideObb3's common case: the first largest of the fifteen gaps (faces 0-5, edges 6 + 3i + j)
-/// with every edge gap in A's frame, normalised.
+/// collideObb3's root-free comparison of two candidate separations is certain when its two products
+/// differ by more than this fraction of the first (obb3.cpp gives the argument); otherwise both
+/// paths normalise the gaps and pick as a scan in axis order does.
+inline constexpr double kCertain = 0x1p-48;
+
+/// collideObb3's common case: the largest of the fifteen gaps (faces 0-5, edges 6 + 3i + j) with
+/// every edge gap in A's frame, normalised: the first largest in axis order, found as obb3.cpp's
+/// SSE2 path finds it (largestRootFree, else largestNormalised), so the same bits.
 struct LargestGap {
   double gap;  ///< The largest gap, metres.
   int axis;    ///< Its axis index (SatResult3::axis_index).
+  // The pose, for the winner's normal: bit for bit obb3.cpp's Pose3 (lane 3 of each is padding).
+  double t[4];       ///< a_k . d, d = cB - cA.
+  double tb[4];      ///< b_j . d.
+  double col[3][4];  ///< col[j][k] = r_kj = a_k . b_j.
 };
 
 /// collideObb3's largest gap, when every edge gap clears the filter: |gap| > bound and squared axis
-/// length > min_length2 (obb3.cpp, EdgeFilter). False, with nothing written, otherwise. Call only
-/// when geometry/batch_path says the CPU has AVX2.
+/// length > min_length2 (obb3.cpp, rootFreeBound and EdgeFilter). False otherwise, with only the
+/// pose written. Call only when geometry/batch_path says the CPU has AVX2.
 bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
                     LargestGap& out);
 
