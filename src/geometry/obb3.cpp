@@ -217,11 +217,11 @@ struct EdgeFilter {
   return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
 }
 
-// collideObb3's common case compares candidate separations without roots (the batch kernels'
-// Candidate, batch_kernels.hpp): gap / sqrt(length2) is carried as gap, length2 and
-// square = gap |gap|, and as z -> z|z| is increasing, y's separation is the larger iff
-// y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root and one
-// division remain, for the winner only, which reports gap / sqrt(length2) as before.
+// collideObb3's AVX2 kernel (obb3_avx2.cpp, largestGapAvx2) compares candidate separations
+// without roots (the batch kernels' Candidate, batch_kernels.hpp): gap / sqrt(length2) is carried
+// as gap, length2 and square = gap |gap|, and as z -> z|z| is increasing, y's separation is the
+// larger iff y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root
+// and one division remain, for the winner only, which reports gap / sqrt(length2) as before.
 //
 // Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
 // < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
@@ -240,9 +240,9 @@ constexpr double kRootFreeMaxScale = 0x1p400;
 // and gap / sqrt(length2), within 2 u of its exact value, orders the two the same way, strictly.
 // When every step is certain, the winner is the axis that normalising every gap and scanning in
 // axis order picks (the tournament's runs are consecutive, and comparisons of doubles are
-// transitive), bit for bit; otherwise the gaps are normalised and scanned. So the result is always
-// the normalising one's, near ties included.
-using obb3_detail::kCertain;
+// transitive), bit for bit; otherwise the kernel normalises and scans too. So its result is always
+// that of the SSE2 path below (largestNormalised), near ties included: the root-free pick pays
+// for itself only where a blend instruction selects (SSE2 has none).
 
 // The bound the common case needs every edge gap to clear: the filter's, or infinity (no edge
 // clears it) for a pair whose scale is outside the root-free comparison's range.
@@ -346,15 +346,6 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   best_index = larger ? index : best_index;
 }
 
-// The square root, correctly rounded (sqrtsd on SSE2; std::sqrt there adds an errno check).
-[[gnu::always_inline]] inline double root(double x) {
-#if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
-#else
-  return std::sqrt(x);
-#endif
-}
-
 // gap / sqrt(length2) lane by lane; on SSE2 one sqrtpd and one divpd, the same correctly rounded
 // operations as the scalar form, so the same bits either way.
 [[gnu::always_inline]] inline V2 normalised2(V2 gap, V2 length2) {
@@ -365,78 +356,8 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
 #endif
 }
 
-// Root-free edge candidates, one per lane (see rootFreeBound): gap times axis length, squared axis
-// length, gap |gap|, and the axis index (SatResult3::axis_index) as a double.
-struct Candidates2 {
-  V2 gap, length2, square, axis;
-};
-
-// Lane by lane the first largest of x then y: y only where its separation is strictly larger.
-// `doubtful` gains the lanes where the step is not certain (rootFreeBound, kCertain).
-[[gnu::always_inline]] inline Candidates2 firstLargest(const Candidates2& x, const Candidates2& y,
-                                                       M2& doubtful) {
-  const V2 y_side = y.square * x.length2, x_side = x.square * y.length2;
-  const M2 y_wins = y_side > x_side;
-  doubtful |= ~(abs2(y_side - x_side) > abs2(y_side) * V2{kCertain, kCertain});
-  return {select2(y_wins, y.gap, x.gap), select2(y_wins, y.length2, x.length2),
-          select2(y_wins, y.square, x.square), select2(y_wins, y.axis, x.axis)};
-}
-
-// Lane 1 of every field in lane 0.
-[[gnu::always_inline]] inline Candidates2 secondLane(const Candidates2& c) {
-  return {__builtin_shufflevector(c.gap, c.gap, 1, 1),
-          __builtin_shufflevector(c.length2, c.length2, 1, 1),
-          __builtin_shufflevector(c.square, c.square, 1, 1),
-          __builtin_shufflevector(c.axis, c.axis, 1, 1)};
-}
-
-// The first largest edge candidate, in lane 0, and whether every step was certain. The tournament,
-// which obb3_avx2.cpp's largestGapAvx2 runs too: for each i, edges (i, 0), (i, 1), (i, 2) (lane i
-// of column j's gaps), then those three winners in the order i = 0, 1, 2. Every step keeps the
-// earlier run of axes unless the later one's separation is strictly larger, and every run is
-// consecutive in axis order, so with certain steps the first largest axis wins, as in a scan.
-[[gnu::always_inline]] inline Candidates2 largestEdge(const FastEdges& fast, bool& certain) {
-  Candidates2 lo, hi;  // lanes i = 0, 1; lane i = 2 (lane 1 is padding)
-  M2 doubtful_lo{0, 0}, doubtful_hi{0, 0}, doubtful_last{0, 0};
-  staticFor<3>([&](auto jc) {
-    constexpr int j = decltype(jc)::value;
-    const V2 gap_lo = fast.gap[j].lo, gap_hi = fast.gap[j].hi;
-    const Candidates2 column_lo{gap_lo, fast.length2[j].lo, gap_lo * abs2(gap_lo),
-                                V2{6.0 + j, 9.0 + j}};
-    const Candidates2 column_hi{gap_hi, fast.length2[j].hi, gap_hi * abs2(gap_hi),
-                                V2{12.0 + j, 12.0 + j}};
-    if constexpr (j == 0) {
-      lo = column_lo;
-      hi = column_hi;
-    } else {
-      lo = firstLargest(lo, column_lo, doubtful_lo);
-      hi = firstLargest(hi, column_hi, doubtful_hi);
-    }
-  });
-  const Candidates2 best =
-      firstLargest(firstLargest(lo, secondLane(lo), doubtful_last), hi, doubtful_last);
-  const M2 doubtful = doubtful_lo | ((doubtful_hi | doubtful_last) & M2{-1, 0});
-  certain = (doubtful[0] | doubtful[1]) == 0;
-  return best;
-}
-
-// The largest of the faces' winner (best, best_index) and the nine fast edge gaps, root-free: the
-// faces' winner enters with length2 = 1 and square best |best|. False, with nothing written, when a
-// step is not certain.
-[[gnu::always_inline]] inline bool largestRootFree(const FastEdges& fast, double& best,
-                                                   int& best_index) {
-  bool certain = false;
-  const Candidates2 edge = largestEdge(fast, certain);
-  const double edge_side = edge.square[0], face_side = best * std::abs(best) * edge.length2[0];
-  if (!certain || !(std::abs(edge_side - face_side) > kCertain * std::abs(edge_side))) return false;
-  if (edge_side > face_side) {
-    best = edge.gap[0] / root(edge.length2[0]);
-    best_index = static_cast<int>(edge.axis[0]);
-  }
-  return true;
-}
-
-// The same by normalising the nine gaps together, then picking in axis order.
+// The largest of the faces' winner (best, best_index) and the nine fast edge gaps: the gaps
+// normalised together, then picked in axis order.
 [[gnu::always_inline]] inline void largestNormalised(const FastEdges& fast, double& best,
                                                      int& best_index) {
   V3 g[3];
@@ -498,8 +419,8 @@ namespace {
   const FastEdges fast = fastEdges(a, b, p);
   const EdgeFilter filter = edgeFilter(a, b, p.d);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
-  // candidates are the fast ones, compared without roots (rootFreeBound) where that is certain.
-  const V2 bound{rootFreeBound(filter), rootFreeBound(filter)};
+  // candidates are the fast ones, normalised together and compared without branches.
+  const V2 bound{filter.bound, filter.bound};
   const V2 min_length2{filter.min_length2, filter.min_length2};
   M2 sure_lo = abs2(fast.gap[0].lo) > bound, sure_hi = abs2(fast.gap[0].hi) > bound;
   staticFor<3>([&](auto jc) {
@@ -512,7 +433,7 @@ namespace {
     sure_hi &= fast.length2[j].hi > min_length2;
   });
   if (all3(sure_lo, sure_hi)) {
-    if (!largestRootFree(fast, best, best_index)) largestNormalised(fast, best, best_index);
+    largestNormalised(fast, best, best_index);
     r.separation = best;
     r.axis_index = best_index;
     if (best_index >= 6) {

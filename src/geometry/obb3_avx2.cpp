@@ -114,13 +114,15 @@ struct Lanes {
   }
 }
 
-// obb3.cpp's Candidates2: root-free edge candidates, one per lane, the axis index as a double.
+// Root-free edge candidates, one per lane (obb3.cpp, rootFreeBound, gives the comparison, its
+// range and its certificate): gap times axis length, squared axis length, gap |gap|, and the axis
+// index (SatResult3::axis_index) as a double.
 struct Candidates {
   __m256d gap, length2, square, axis;
 };
 
-// Lane by lane the first largest of x then y, as obb3.cpp's firstLargest; `doubtful` gains the
-// lanes where the step is not certain.
+// Lane by lane the first largest of x then y: y only where its separation is strictly larger.
+// `doubtful` gains the lanes where the step is not certain (kCertain).
 [[gnu::always_inline]] inline Candidates firstLargest(const Candidates& x, const Candidates& y,
                                                       __m256d& doubtful) {
   const __m256d y_side = _mm256_mul_pd(y.square, x.length2);
@@ -145,8 +147,11 @@ struct Candidates {
   return {high(c.gap), high(c.length2), high(c.square), high(c.axis)};
 }
 
-// obb3.cpp's largestEdge, the same tournament: lane by lane over the columns j, then lanes 0, 1
-// and 2 in turn. The winner is in lane 0.
+// The first largest edge candidate, in lane 0, and whether every step was certain. The
+// tournament: lane by lane over the columns j (edges (i, 0), (i, 1), (i, 2) in lane i), then
+// lanes 0, 1 and 2 in turn. Every step keeps the earlier run of axes unless the later one's
+// separation is strictly larger, and every run is consecutive in axis order, so with certain
+// steps the first largest axis wins, as in a scan in axis order.
 [[gnu::always_inline]] inline Candidates largestEdge(const Lanes& p, bool& certain) {
   Candidates c[3];
   for (int j = 0; j < 3; ++j) {
@@ -163,7 +168,9 @@ struct Candidates {
   return best;
 }
 
-// obb3.cpp's largestRootFree: the faces' winner (best, best_axis) against the edges' root-free.
+// The largest of the faces' winner (best, best_axis) and the nine edge gaps, root-free: the faces'
+// winner enters with length2 = 1 and square best |best|. False, with nothing written, when a step
+// is not certain.
 [[gnu::always_inline]] inline bool largestRootFree(const Lanes& p, double& best, int& best_axis) {
   bool certain = false;
   const Candidates edge = largestEdge(p, certain);

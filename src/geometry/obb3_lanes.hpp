@@ -26,14 +26,14 @@ struct OverlapGaps {
 /// overlapObb3's face and fast edge gaps. Call only when geometry/batch_path says the CPU has AVX2.
 void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out);
 
-/// collideObb3's root-free comparison of two candidate separations is certain when its two products
-/// differ by more than this fraction of the first (obb3.cpp gives the argument); otherwise both
-/// paths normalise the gaps and pick as a scan in axis order does.
+/// collideObb3's root-free comparison of two candidate separations (the AVX2 kernel's) is certain
+/// when its two products differ by more than this fraction of the first (obb3.cpp gives the
+/// argument); otherwise the kernel normalises the gaps and picks as a scan in axis order does.
 inline constexpr double kCertain = 0x1p-48;
 
 /// collideObb3's common case: the largest of the fifteen gaps (faces 0-5, edges 6 + 3i + j) with
-/// every edge gap in A's frame, normalised: the first largest in axis order, found as obb3.cpp's
-/// SSE2 path finds it (largestRootFree, else largestNormalised), so the same bits.
+/// every edge gap in A's frame, normalised: the first largest in axis order, bit for bit what
+/// obb3.cpp's SSE2 path (largestNormalised) finds, though compared without roots where certain.
 struct LargestGap {
   double gap;  ///< The largest gap, metres.
   int axis;    ///< Its axis index (SatResult3::axis_index).
