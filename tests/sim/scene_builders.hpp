@@ -37,8 +37,12 @@ inline Scene parkingLot(std::uint64_t seed) {
     if (row == 0) continue;
     for (int col = -10; col <= 10; ++col) {
       if (skip(rng) == 0) continue;
-      s.parked.push_back(parkedCar("P" + std::to_string(n++), col * 2.6 + jitter(rng),
-                                   row * 9.0 + jitter(rng), 90.0 + 10.0 * jitter(rng)));
+      // Drawn one statement at a time: the order in which a call's arguments are evaluated is
+      // unspecified (GCC and Clang differ), and the lot must be the same whichever compiled it.
+      const double x = col * 2.6 + jitter(rng);
+      const double y = row * 9.0 + jitter(rng);
+      const double heading = 90.0 + 10.0 * jitter(rng);
+      s.parked.push_back(parkedCar("P" + std::to_string(n++), x, y, heading));
     }
   }
   return s;
