@@ -86,6 +86,7 @@ World::World(Scene scene, const WorldSettings& settings)
   // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
   const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
   candidates_.reserve(expected);
+  cover_.reserve(expected);
   contacts_.reserve(expected);
   previous_contacts_.reserve(expected);
   contact_speed_.reserve(expected);
