@@ -61,9 +61,9 @@ background="$build-background.log"
 ) >"$background" 2>&1 &
 builds=$!
 suite=0
-# The window tests under Xvfb can miss their window now and then on a loaded machine (xdotool finds
-# no window although the game runs: docs/robustness.md); a test gets three tries, as in the
-# sanitizer stage, and a real failure fails all three.
+# The window tests under Xvfb used to miss their window on a loaded machine (an X server reset
+# under the game's connection, fixed with Xvfb -noreset: docs/robustness.md); a test still gets
+# three tries, as in the sanitizer stage, and a real failure fails all three.
 ctest --test-dir "$build" --output-on-failure -j"$jobs" --repeat until-pass:3 \
   ${CARDEMO_CTEST_ARGS:-} || suite=$?
 stage_step "ctest"
