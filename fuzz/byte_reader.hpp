@@ -23,7 +23,10 @@ class ByteReader {
     return v;
   }
   /// Next 8 bytes as an unsigned integer.
-  std::uint64_t u64() { return u32() | (static_cast<std::uint64_t>(u32()) << 32); }
+  std::uint64_t u64() {
+    const std::uint64_t low = u32();
+    return low | (static_cast<std::uint64_t>(u32()) << 32);
+  }
   /// A choice among `n` options (one byte).
   int pick(int n) { return byte() % n; }
   /// +1 or -1 (one byte).

@@ -20,7 +20,10 @@ constexpr double kOverlapTarget = 0.45;
 
 Obb2 randomCar(std::mt19937_64& rng, const Eigen::Vector2d& center) {
   std::uniform_real_distribution<double> length(3.5, 5.5), width(1.6, 2.2), turn(-180.0, 180.0);
-  return Obb2::fromDegrees(center, turn(rng), length(rng), width(rng));
+  const double heading = turn(rng);
+  const double car_length = length(rng);
+  const double car_width = width(rng);
+  return Obb2::fromDegrees(center, heading, car_length, car_width);
 }
 
 Obb3 randomBody(std::mt19937_64& rng, const Eigen::Vector3d& center) {
@@ -217,8 +220,10 @@ std::vector<LotCar> randomLayout(std::size_t n) {
   cars.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double heading = turn(rng);
-    cars.push_back(
-        {Obb2::fromDegrees({pos(rng), pos(rng)}, heading, length(rng), width(rng)), heading});
+    const Eigen::Vector2d center{pos(rng), pos(rng)};
+    const double car_length = length(rng);
+    const double car_width = width(rng);
+    cars.push_back({Obb2::fromDegrees(center, heading, car_length, car_width), heading});
   }
   return cars;
 }

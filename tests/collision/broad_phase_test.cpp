@@ -133,7 +133,9 @@ TEST(BroadPhase, ExactTouchingAtTheEdgeOfTheScanIsFound) {
   std::vector<Aabb2> scene;
   for (int i = 0; i < 3000; ++i) {
     const double x = grid_units(rng) / 16.0, y = grid_units(rng) / 16.0;
-    scene.push_back(box(x, y, x + size_units(rng) / 16.0, y + size_units(rng) / 16.0));
+    const double w = size_units(rng) / 16.0;
+    const double h = size_units(rng) / 16.0;
+    scene.push_back(box(x, y, x + w, y + h));
   }
   std::vector<Aabb2> queries;
   for (const Aabb2& b : scene) {

@@ -11,12 +11,21 @@
 namespace cardemo {
 namespace {
 
+// One draw a statement, so GCC and Clang build the same boxes (argument order is unspecified).
+Obb2 randomBox(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> pos(-6.0, 6.0), deg(-180.0, 180.0), size(0.5, 5.0);
+  const Eigen::Vector2d center{pos(rng), pos(rng)};
+  const double heading = deg(rng);
+  const double length = size(rng);
+  const double width = size(rng);
+  return Obb2::fromDegrees(center, heading, length, width);
+}
+
 TEST(NarrowPhase, BoxDispatchMatchesCollideObb2) {
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> pos(-6.0, 6.0), deg(-180.0, 180.0), size(0.5, 5.0);
   for (int i = 0; i < 2000; ++i) {
-    const Obb2 a = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
-    const Obb2 b = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const Obb2 a = randomBox(rng);
+    const Obb2 b = randomBox(rng);
     const SatResult2 want = collideObb2(a, b);
     const SatResult2 got = collidePlayer(a, StaticShape{b});
     ASSERT_EQ(got.hit, want.hit);
@@ -27,10 +36,9 @@ TEST(NarrowPhase, BoxDispatchMatchesCollideObb2) {
 
 TEST(NarrowPhase, PolygonDispatchAgreesWithTheSameBoxAsAnObb) {
   std::mt19937_64 rng(12);
-  std::uniform_real_distribution<double> pos(-6.0, 6.0), deg(-180.0, 180.0), size(0.5, 5.0);
   for (int i = 0; i < 2000; ++i) {
-    const Obb2 a = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
-    const Obb2 b = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const Obb2 a = randomBox(rng);
+    const Obb2 b = randomBox(rng);
     const SatResult2 box = collidePlayer(a, StaticShape{b});
     const SatResult2 poly = collidePlayer(a, StaticShape{ConvexPolygon::fromObb(b)});
     ASSERT_NEAR(poly.separation, box.separation, 1e-9) << "case " << i;
@@ -44,10 +52,10 @@ TEST(NarrowPhase, SeparationAlongAnAxisMatchesTheCornersAndTheSat) {
   // Brute-force twin: the gap between the corners' projections; and along SAT's own normal it is
   // SAT's separation (for a box, and for the same box as a polygon).
   std::mt19937_64 rng(13);
-  std::uniform_real_distribution<double> pos(-6.0, 6.0), deg(-180.0, 180.0), size(0.5, 5.0);
+  std::uniform_real_distribution<double> deg(-180.0, 180.0);
   for (int i = 0; i < 2000; ++i) {
-    const Obb2 a = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
-    const Obb2 b = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), size(rng), size(rng));
+    const Obb2 a = randomBox(rng);
+    const Obb2 b = randomBox(rng);
     const double angle = deg(rng) * 3.14159265358979323846 / 180.0;
     const Eigen::Vector2d axis(std::cos(angle), std::sin(angle));
     double a_max = -1e300, b_min = 1e300;

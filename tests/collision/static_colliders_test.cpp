@@ -116,7 +116,11 @@ TEST(StaticColliders, VisitGivesTheVariantDispatchBitForBit) {
       wid(1.4, 2.2), step(-3.0, 3.0);
   int overlapping = 0;
   for (int n = 0; n < 4000; ++n) {
-    const Obb2 player = Obb2::fromDegrees({pos(rng), pos(rng)}, deg(rng), len(rng), wid(rng));
+    const Eigen::Vector2d center{pos(rng), pos(rng)};
+    const double heading = deg(rng);
+    const double length = len(rng);
+    const double width = wid(rng);
+    const Obb2 player = Obb2::fromDegrees(center, heading, length, width);
     const Eigen::Vector2d displacement{step(rng), step(rng)};
     const Eigen::Vector2d axis = unitFromDegrees(deg(rng));
     for (std::uint32_t i = 0; i < c.size(); ++i) {

@@ -85,9 +85,10 @@ TEST(ExactSat3, SymmetricInTheArguments) {
   std::normal_distribution<double> g;
   for (int k = 0; k < 500; ++k) {
     const auto box = [&] {
-      return Obb3::fromQuaternion(
-          {g(rng), g(rng), g(rng)}, Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)),
-          {1 + std::abs(g(rng)), 1 + std::abs(g(rng)), 1 + std::abs(g(rng))});
+      const Eigen::Vector3d center{g(rng), g(rng), g(rng)};
+      const Eigen::Quaterniond q{g(rng), g(rng), g(rng), g(rng)};
+      const Eigen::Vector3d size{1 + std::abs(g(rng)), 1 + std::abs(g(rng)), 1 + std::abs(g(rng))};
+      return Obb3::fromQuaternion(center, q, size);
     };
     const Obb3 a = box(), b = box();
     const exact::ExactResult ab = exact::collideObb3(a, b), ba = exact::collideObb3(b, a);

@@ -206,7 +206,7 @@ std::pair<Shape, Shape> placedNearTouching(Random& rng, Shape a, Shape b) {
   const Eigen::Vector2d on_edge = p0 + rng.uniform(0.05, 0.95) * (p1 - p0);
   const Eigen::Vector2d m = Eigen::Vector2d((p1 - p0).y(), -(p1 - p0).x()).normalized();
   const Eigen::Vector2d d = along_a ? m : Eigen::Vector2d(-m);  // from A towards B
-  const double gap = rng.sign() * rng.logUniform(1e-9, 1.0);
+  const double gap = rng.signedLogUniform(1e-9, 1.0);
   const Eigen::Vector2d meet = along_a ? Eigen::Vector2d(on_edge - supportVertex(pb, -d))
                                        : Eigen::Vector2d(supportVertex(pa, d) - on_edge);
   b.translate(meet + d * gap);
@@ -233,12 +233,12 @@ std::pair<Shape, Shape> quadrilateralPair(Random& rng) {
   const Eigen::Vector2d base = rng.farPoint(1e7);
   Shape a = randomQuadrilateral(rng, base);
   if (rng.integer(0, 1) == 0) return placedNearTouching(rng, a, randomQuadrilateral(rng, base));
-  return {a, randomQuadrilateral(rng, base + rng.direction() * rng.uniform(0, 20))};
+  return {a, randomQuadrilateral(rng, base + rng.offset(0, 20))};
 }
 
 TEST(ConvexPolygonRandom, GapsOnBothSidesOfTouching) {
-  const ClassStats s = runShapeClass(
-      2001, [](Random& rng) { return nearTouching(rng, rng.direction() * rng.uniform(0, 100)); });
+  const ClassStats s =
+      runShapeClass(2001, [](Random& rng) { return nearTouching(rng, rng.offset(0, 100)); });
   EXPECT_GT(s.exact_hits, s.cases / 3);
   EXPECT_LT(s.exact_hits, 2 * s.cases / 3);
 }
@@ -254,7 +254,7 @@ TEST(ConvexPolygonRandom, FarFromOrigin) {
     const Eigen::Vector2d base = rng.farPoint(1e7);
     if (rng.integer(0, 1) == 0) return nearTouching(rng, base);
     Shape a = randomShape(rng, base, 0.1, 20.0, true);
-    Shape b = randomShape(rng, base + rng.direction() * rng.uniform(0, 20), 0.1, 20.0, !a.is_box);
+    Shape b = randomShape(rng, base + rng.offset(0, 20), 0.1, 20.0, !a.is_box);
     return std::pair{a, b};
   });
   EXPECT_GT(s.exact_hits, s.cases / 10);
@@ -274,7 +274,7 @@ TEST(ConvexPolygonRandom, Containment) {
                        std::abs((c - pa.vertex(i)).x() * e.y() - (c - pa.vertex(i)).y() * e.x()));
     }
     const double r = 0.45 * inner;
-    Shape b = randomShape(rng, c + rng.direction() * rng.uniform(0, r), 0.01 * r, r, !a.is_box);
+    Shape b = randomShape(rng, c + rng.offset(0, r), 0.01 * r, r, !a.is_box);
     return std::pair{a, b};
   });
   EXPECT_EQ(s.exact_hits, s.cases) << "every contained pair overlaps";
@@ -382,7 +382,7 @@ TEST(ConvexPolygonSat, BoxPolygonMatchesBoxBox) {
   Random rng(2005);
   for (int i = 0; i < 1000; ++i) {
     const Obb2 a = rng.box(rng.farPoint(1e7), 0.1, 10.0);
-    const Obb2 b = rng.box(a.center + rng.direction() * rng.uniform(0, 10), 0.1, 10.0);
+    const Obb2 b = rng.box(a.center + rng.offset(0, 10), 0.1, 10.0);
     const SatResult2 boxes = collideObb2(a, b);
     const SatResult2 mixed = collideObbPolygon(a, ConvexPolygon::fromObb(b));
     EXPECT_NEAR(boxes.separation, mixed.separation, 1e-8);

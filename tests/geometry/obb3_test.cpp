@@ -213,8 +213,7 @@ TEST(Obb3Quaternion, NormalisesAndIsOrthonormal) {
 TEST(Obb3Aabb, ContainsEveryCorner) {
   std::mt19937_64 rng(0x0b3a0300);
   for (int k = 0; k < 10000; ++k) {
-    const Obb3 box = Obb3::fromQuaternion(test3::randomCenter(rng), test3::randomRotation(rng),
-                                          test3::randomSize(rng));
+    const Obb3 box = test3::randomBox(rng);
     const Aabb3 bounds = box.aabb();
     for (int c = 0; c < 8; ++c) {
       const Eigen::Vector3d p{(c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0};
@@ -266,13 +265,13 @@ TEST(Obb3FastPath, EdgeGapsAtTheErrorBoundMatchTheOracle) {
     int checked = 0;
     const int n = test3::scaledCount(20000);
     for (int k = 0; k < n; ++k) {
-      Pair3 p{Obb3::fromQuaternion({offset, -offset, 0.5 * offset}, test3::randomRotation(rng),
-                                   test3::randomSize(rng)),
-              Obb3::fromQuaternion({0, 0, 0}, test3::randomRotation(rng), test3::randomSize(rng))};
+      Pair3 p{test3::randomBoxAt(rng, {offset, -offset, 0.5 * offset}),
+              test3::randomBoxAt(rng, {0, 0, 0})};
       const Eigen::Vector3d axis = test3::candidateAxis(p.a, p.b, 6 + static_cast<int>(rng() % 9));
       if (axis.isZero()) continue;
       const double scale = p.a.half.sum() + p.b.half.sum();
-      const double gap = test3::randomSign(rng) * scale * test3::logUniform(rng, 1e-14, 1e-9);
+      const double gap_sign = test3::randomSign(rng);
+      const double gap = gap_sign * scale * test3::logUniform(rng, 1e-14, 1e-9);
       test3::placeAtGap(p.a, p.b, axis * test3::randomSign(rng), gap);
       const exact::ExactResult ex = exact::collideObb3(p.a, p.b);
       const double sure = 1e-13 * (scale + (p.b.center - p.a.center).lpNorm<1>());

@@ -38,7 +38,7 @@ TEST(PolygonStore, QueriesOnViewsEqualQueriesOnPolygons) {
   for (int i = 0; i < 400; ++i) {
     const Eigen::Vector2d c = rng.farPoint(1e7);
     polygons.push_back(i % 2 == 0 ? rng.quadrilateral(c, 0.1, 20.0) : rng.polygon(c, 0.1, 20.0));
-    polygons.push_back(rng.polygon(c + rng.direction() * rng.uniform(0, 20), 0.1, 20.0));
+    polygons.push_back(rng.polygon(c + rng.offset(0, 20), 0.1, 20.0));
   }
   store.reserve(polygons.size(), 16 * polygons.size());
   for (const ConvexPolygon& p : polygons) store.add(p);

@@ -36,13 +36,26 @@ class Random {
   int integer(int lo, int hi) { return uniformInt(rng_, lo, hi); }
   /// +1 or -1.
   double sign() { return integer(0, 1) == 0 ? -1.0 : 1.0; }
+  /// sign() times logUniform(lo, hi), drawn in that order.
+  double signedLogUniform(double lo, double hi) {
+    const double s = sign();
+    return s * logUniform(lo, hi);
+  }
   /// Uniform unit vector.
   Eigen::Vector2d direction() {
     const double t = uniform(-std::numbers::pi, std::numbers::pi);
     return {std::cos(t), std::sin(t)};
   }
-  /// Point at a log-uniform distance (1 m .. max_radius) from the origin.
-  Eigen::Vector2d farPoint(double max_radius) { return direction() * logUniform(1.0, max_radius); }
+  /// direction() times a distance uniform in [lo, hi), drawn in that order.
+  Eigen::Vector2d offset(double lo, double hi) {
+    const Eigen::Vector2d d = direction();
+    return d * uniform(lo, hi);
+  }
+  /// Point at a log-uniform distance (1 m .. max_radius) from the origin (direction drawn first).
+  Eigen::Vector2d farPoint(double max_radius) {
+    const Eigen::Vector2d d = direction();
+    return d * logUniform(1.0, max_radius);
+  }
   /// Box with a random heading and sides log-uniform in [lo, hi].
   Obb2 box(const Eigen::Vector2d& center, double lo, double hi) {
     return {center, direction(), {0.5 * logUniform(lo, hi), 0.5 * logUniform(lo, hi)}};

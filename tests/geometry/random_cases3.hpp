@@ -52,18 +52,44 @@ inline Eigen::Vector3d randomSize(std::mt19937_64& rng) {
   return {logUniform(rng, 0.01, 100.0), logUniform(rng, 0.01, 100.0), logUniform(rng, 0.01, 100.0)};
 }
 
+/// Random direction (drawn first) times a distance uniform in [lo, hi).
+inline Eigen::Vector3d randomOffset(std::mt19937_64& rng, double lo, double hi) {
+  const Eigen::Vector3d u = randomUnit(rng);
+  return u * uniform(rng, lo, hi);
+}
+
+/// Coordinate 1e6..1e7 m from the origin on either side (the sign drawn first).
+inline double farCoordinate(std::mt19937_64& rng) {
+  const double sign = randomSign(rng);
+  return sign * uniform(rng, 1e6, 1e7);
+}
+
 /// Centre anywhere up to 1e7 m from the origin: a third near the origin, a third at log-uniform
 /// distance, a third far out (1e6..1e7 m).
 inline Eigen::Vector3d randomCenter(std::mt19937_64& rng) {
   switch (rng() % 3) {
     case 0:
-      return randomUnit(rng) * uniform(rng, 0.0, 10.0);
-    case 1:
-      return randomUnit(rng) * logUniform(rng, 1.0, 1e7);
+      return randomOffset(rng, 0.0, 10.0);
+    case 1: {
+      const Eigen::Vector3d u = randomUnit(rng);
+      return u * logUniform(rng, 1.0, 1e7);
+    }
     default:
-      return {randomSign(rng) * uniform(rng, 1e6, 1e7), randomSign(rng) * uniform(rng, 1e6, 1e7),
-              randomSign(rng) * uniform(rng, 1e6, 1e7)};
+      return {farCoordinate(rng), farCoordinate(rng), farCoordinate(rng)};
   }
+}
+
+/// Box with a random rotation and size, drawn in that order, centred at `center`.
+inline Obb3 randomBoxAt(std::mt19937_64& rng, const Eigen::Vector3d& center) {
+  const Eigen::Quaterniond q = randomRotation(rng);
+  const Eigen::Vector3d size = randomSize(rng);
+  return Obb3::fromQuaternion(center, q, size);
+}
+
+/// Box with a random centre, rotation and size, drawn in that order.
+inline Obb3 randomBox(std::mt19937_64& rng) {
+  const Eigen::Vector3d center = randomCenter(rng);
+  return randomBoxAt(rng, center);
 }
 
 /// Half-width of `box` along unit direction n (double; the oracle decides the truth).
@@ -90,29 +116,35 @@ inline void placeAtGap(const Obb3& a, Obb3& b, const Eigen::Vector3d& n, double 
 
 /// Gap magnitude log-uniform in 1e-9..1 m on either side of touching.
 inline double randomGap(std::mt19937_64& rng) {
-  return randomSign(rng) * logUniform(rng, 1e-9, 1.0);
+  const double sign = randomSign(rng);
+  return sign * logUniform(rng, 1e-9, 1.0);
+}
+
+/// Places b at randomGap() along n or -n (placeAtGap); the sign is drawn first, then the gap.
+inline void placeAtRandomGap(std::mt19937_64& rng, const Obb3& a, Obb3& b,
+                             const Eigen::Vector3d& n) {
+  const double sign = randomSign(rng);
+  placeAtGap(a, b, n * sign, randomGap(rng));
 }
 
 /// Random pair placed at a small gap along one of its 15 candidate axes or a random direction.
 inline Pair3 gapPair(std::mt19937_64& rng) {
-  Pair3 p{Obb3::fromQuaternion(randomCenter(rng), randomRotation(rng), randomSize(rng)),
-          Obb3::fromQuaternion({0, 0, 0}, randomRotation(rng), randomSize(rng))};
+  Pair3 p{randomBox(rng), randomBoxAt(rng, {0, 0, 0})};
   const int k = static_cast<int>(rng() % 16);
   Eigen::Vector3d n = k < 15 ? candidateAxis(p.a, p.b, k) : randomUnit(rng);
   if (n.isZero()) n = randomUnit(rng);
-  placeAtGap(p.a, p.b, n * randomSign(rng), randomGap(rng));
+  placeAtRandomGap(rng, p.a, p.b, n);
   return p;
 }
 
 /// Both boxes far out (1e6..1e7 m per coordinate), at a gap log-uniform 1e-9..10 m either side.
 inline Pair3 farPair(std::mt19937_64& rng) {
-  const Eigen::Vector3d c{randomSign(rng) * uniform(rng, 1e6, 1e7),
-                          randomSign(rng) * uniform(rng, 1e6, 1e7),
-                          randomSign(rng) * uniform(rng, 1e6, 1e7)};
-  Pair3 p{Obb3::fromQuaternion(c, randomRotation(rng), randomSize(rng)),
-          Obb3::fromQuaternion({0, 0, 0}, randomRotation(rng), randomSize(rng))};
+  const Eigen::Vector3d c{farCoordinate(rng), farCoordinate(rng), farCoordinate(rng)};
+  Pair3 p{randomBoxAt(rng, c), randomBoxAt(rng, {0, 0, 0})};
   const Eigen::Vector3d n = candidateAxis(p.a, p.b, static_cast<int>(rng() % 6));
-  placeAtGap(p.a, p.b, n * randomSign(rng), randomSign(rng) * logUniform(rng, 1e-9, 10.0));
+  const double sign = randomSign(rng);
+  const double gap_sign = randomSign(rng);
+  placeAtGap(p.a, p.b, n * sign, gap_sign * logUniform(rng, 1e-9, 10.0));
   return p;
 }
 
@@ -126,13 +158,17 @@ inline Pair3 sizePair(std::mt19937_64& rng) {
     }
     return s;
   };
-  Pair3 p{Obb3::fromQuaternion(randomCenter(rng), randomRotation(rng), extreme()),
-          Obb3::fromQuaternion({0, 0, 0}, randomRotation(rng), extreme())};
+  const Eigen::Vector3d ca = randomCenter(rng);
+  const Eigen::Quaterniond qa = randomRotation(rng);
+  const Eigen::Vector3d sa = extreme();
+  const Eigen::Quaterniond qb = randomRotation(rng);
+  const Eigen::Vector3d sb = extreme();
+  Pair3 p{Obb3::fromQuaternion(ca, qa, sa), Obb3::fromQuaternion({0, 0, 0}, qb, sb)};
   if (rng() % 2 == 0) {
-    placeAtGap(p.a, p.b, candidateAxis(p.a, p.b, static_cast<int>(rng() % 6)) * randomSign(rng),
-               randomGap(rng));
+    const Eigen::Vector3d n = candidateAxis(p.a, p.b, static_cast<int>(rng() % 6));
+    placeAtRandomGap(rng, p.a, p.b, n);
   } else {
-    p.b.center = p.a.center + randomUnit(rng) * uniform(rng, 0.0, 150.0);
+    p.b.center = p.a.center + randomOffset(rng, 0.0, 150.0);
   }
   return p;
 }
@@ -155,8 +191,10 @@ inline Pair3 nearParallelPair(std::mt19937_64& rng, double lo = 1e-15, double hi
     s[static_cast<int>(rng() % 3)] = logUniform(rng, 10.0, 100.0);
     return s;
   };
-  Pair3 p{Obb3::fromQuaternion(randomCenter(rng), qa, longBox()),
-          Obb3::fromQuaternion({0, 0, 0}, qb, longBox())};
+  const Eigen::Vector3d ca = randomCenter(rng);
+  const Eigen::Vector3d sa = longBox();
+  const Eigen::Vector3d sb = longBox();
+  Pair3 p{Obb3::fromQuaternion(ca, qa, sa), Obb3::fromQuaternion({0, 0, 0}, qb, sb)};
   const auto pick = rng() % 8;
   if (pick < 6) {
     // The edge pairs that are near parallel have the shortest cross products.
@@ -187,19 +225,19 @@ inline Pair3 nearParallelPair(std::mt19937_64& rng, double lo = 1e-15, double hi
     } else {
       n = randomUnit(rng);
     }
-    placeAtGap(p.a, p.b, n * randomSign(rng), randomGap(rng));
+    placeAtRandomGap(rng, p.a, p.b, n);
   } else if (pick == 6) {
-    placeAtGap(p.a, p.b, candidateAxis(p.a, p.b, static_cast<int>(rng() % 6)) * randomSign(rng),
-               randomGap(rng));
+    const Eigen::Vector3d n = candidateAxis(p.a, p.b, static_cast<int>(rng() % 6));
+    placeAtRandomGap(rng, p.a, p.b, n);
   } else {
-    p.b.center = p.a.center + randomUnit(rng) * uniform(rng, 0.0, 100.0);
+    p.b.center = p.a.center + randomOffset(rng, 0.0, 100.0);
   }
   return p;
 }
 
 /// Exactly coincident boxes (same centre, rotation and size).
 inline Pair3 coincidentPair(std::mt19937_64& rng) {
-  const Obb3 a = Obb3::fromQuaternion(randomCenter(rng), randomRotation(rng), randomSize(rng));
+  const Obb3 a = randomBox(rng);
   return {a, a};
 }
 
@@ -208,13 +246,15 @@ inline Pair3 parallelPair(std::mt19937_64& rng) {
   const Eigen::Quaterniond q = randomRotation(rng);
   const double factor = rng() % 3 == 0 ? 2.0 : rng() % 2 == 0 ? -1.0 : 1.0;
   const Eigen::Quaterniond qb(q.coeffs() * factor);
-  Pair3 p{Obb3::fromQuaternion(randomCenter(rng), q, randomSize(rng)),
-          Obb3::fromQuaternion({0, 0, 0}, qb, randomSize(rng))};
+  const Eigen::Vector3d ca = randomCenter(rng);
+  const Eigen::Vector3d sa = randomSize(rng);
+  const Eigen::Vector3d sb = randomSize(rng);
+  Pair3 p{Obb3::fromQuaternion(ca, q, sa), Obb3::fromQuaternion({0, 0, 0}, qb, sb)};
   if (rng() % 2 == 0) {
-    placeAtGap(p.a, p.b, candidateAxis(p.a, p.b, static_cast<int>(rng() % 3)) * randomSign(rng),
-               randomGap(rng));
+    const Eigen::Vector3d n = candidateAxis(p.a, p.b, static_cast<int>(rng() % 3));
+    placeAtRandomGap(rng, p.a, p.b, n);
   } else {
-    p.b.center = p.a.center + randomUnit(rng) * uniform(rng, 0.0, 150.0);
+    p.b.center = p.a.center + randomOffset(rng, 0.0, 150.0);
   }
   return p;
 }
@@ -223,13 +263,14 @@ inline Pair3 parallelPair(std::mt19937_64& rng) {
 inline Pair3 containmentPair(std::mt19937_64& rng) {
   const Eigen::Vector3d sa{logUniform(rng, 1.0, 100.0), logUniform(rng, 1.0, 100.0),
                            logUniform(rng, 1.0, 100.0)};
-  const Obb3 a = Obb3::fromQuaternion(randomCenter(rng), randomRotation(rng), sa);
+  const Eigen::Vector3d ca = randomCenter(rng);
+  const Obb3 a = Obb3::fromQuaternion(ca, randomRotation(rng), sa);
   // B's bounding sphere fits inside A's inscribed sphere, somewhere in the remaining room.
   const double room = 0.5 * sa.minCoeff();
   const double rb = room * uniform(rng, 0.02, 0.9);
   const Eigen::Vector3d sb = randomUnit(rng).cwiseAbs().cwiseMax(0.01) * (2.0 * rb);
   Obb3 b = Obb3::fromQuaternion({0, 0, 0}, randomRotation(rng), sb);
-  b.center = a.center + randomUnit(rng) * uniform(rng, 0.0, room - b.half.norm());
+  b.center = a.center + randomOffset(rng, 0.0, room - b.half.norm());
   return rng() % 2 == 0 ? Pair3{a, b} : Pair3{b, a};
 }
 

@@ -94,7 +94,7 @@ std::pair<Obb2, Obb2> nearTouching(Random& rng, const Eigen::Vector2d& base, dou
 
 std::pair<Obb2, Obb2> randomPlacement(Random& rng, const Obb2& a, Obb2 b) {
   const double reach = a.half.norm() + b.half.norm();
-  b.center = a.center + rng.direction() * rng.uniform(0.0, 1.2 * reach);
+  b.center = a.center + rng.offset(0.0, 1.2 * reach);
   return {a, b};
 }
 
@@ -102,9 +102,10 @@ TEST(SatObb2Random, GapsOnBothSidesOfTouching) {
   int on_target = 0;
   int total = 0;
   const ClassStats s = runBoxClass(1001, [&](Random& rng) {
-    const double gap = rng.sign() * rng.logUniform(1e-9, 1.0);
-    auto pair = nearTouching(rng, rng.direction() * rng.uniform(0, 50), gap,
-                             rng.box(Eigen::Vector2d::Zero(), 0.1, 20.0));
+    const double gap = rng.signedLogUniform(1e-9, 1.0);
+    const Eigen::Vector2d base = rng.offset(0, 50);
+    const Obb2 b = rng.box(Eigen::Vector2d::Zero(), 0.1, 20.0);
+    auto pair = nearTouching(rng, base, gap, b);
     // The oracle, not the construction, is the reference; sample how often it lands on target.
     if (total++ % 10 == 0) {
       const double ex = exact::collideObb2(pair.first, pair.second).separation;
@@ -122,22 +123,25 @@ TEST(SatObb2Random, FarFromOrigin) {
   const ClassStats s = runBoxClass(1002, [](Random& rng) {
     const Eigen::Vector2d base = rng.farPoint(1e7);
     if (rng.integer(0, 1) == 0) {
-      const double gap = rng.sign() * rng.logUniform(1e-9, 1.0);
+      const double gap = rng.signedLogUniform(1e-9, 1.0);
       return nearTouching(rng, base, gap, rng.box(Eigen::Vector2d::Zero(), 0.1, 20.0));
     }
-    return randomPlacement(rng, rng.box(base, 0.1, 20.0), rng.box(base, 0.1, 20.0));
+    const Obb2 a = rng.box(base, 0.1, 20.0);
+    const Obb2 b = rng.box(base, 0.1, 20.0);
+    return randomPlacement(rng, a, b);
   });
   EXPECT_GT(s.exact_hits, s.cases / 10);
 }
 
 TEST(SatObb2Random, ExtremeSizesAndAspectRatios) {
   const ClassStats s = runBoxClass(1003, [](Random& rng) {
-    const Eigen::Vector2d base = rng.direction() * rng.uniform(0, 1000);
+    const Eigen::Vector2d base = rng.offset(0, 1000);
     Obb2 a = rng.extremeBox(base), b = rng.extremeBox(base);
     if (rng.integer(0, 1) == 0) {
-      const Eigen::Vector2d d = (rng.integer(0, 1) == 0 ? a.axis : a.perp()) * rng.sign();
+      const Eigen::Vector2d face = rng.integer(0, 1) == 0 ? a.axis : a.perp();
+      const Eigen::Vector2d d = face * rng.sign();
       const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
-      b.center = a.center + d * (reach + rng.sign() * rng.logUniform(1e-9, 1.0));
+      b.center = a.center + d * (reach + rng.signedLogUniform(1e-9, 1.0));
       return std::pair{a, b};
     }
     return randomPlacement(rng, a, b);
@@ -148,12 +152,13 @@ TEST(SatObb2Random, ExtremeSizesAndAspectRatios) {
 TEST(SatObb2Random, NearParallel) {
   const ClassStats s = runBoxClass(1004, [](Random& rng) {
     Obb2 b = rng.box(Eigen::Vector2d::Zero(), 0.1, 100.0);
-    auto pair = nearTouching(rng, rng.direction() * rng.uniform(0, 1e4),
-                             rng.sign() * rng.logUniform(1e-9, 1.0), b);
+    const Eigen::Vector2d base = rng.offset(0, 1e4);
+    const double gap = rng.signedLogUniform(1e-9, 1.0);
+    auto pair = nearTouching(rng, base, gap, b);
     // Turn B to within 1e-15..1e-3 rad of A's heading (plus a multiple of 90 degrees).
+    const int quarters = rng.integer(0, 3);
     const double heading = std::atan2(pair.first.axis.y(), pair.first.axis.x()) +
-                           rng.integer(0, 3) * 0.5 * std::numbers::pi +
-                           rng.sign() * rng.logUniform(1e-15, 1e-3);
+                           quarters * 0.5 * std::numbers::pi + rng.signedLogUniform(1e-15, 1e-3);
     pair.second.axis = unitFromRadians(heading);
     return pair;
   });
@@ -163,14 +168,15 @@ TEST(SatObb2Random, NearParallel) {
 
 TEST(SatObb2Random, Containment) {
   const ClassStats s = runBoxClass(1005, [](Random& rng) {
-    const Eigen::Vector2d base = rng.direction() * rng.logUniform(1.0, 1e7);
+    const Eigen::Vector2d base = rng.farPoint(1e7);
     const Obb2 a = rng.box(base, 1.0, 100.0);
     Obb2 b = rng.box(Eigen::Vector2d::Zero(), 0.01, 0.5 * std::min(a.half.x(), a.half.y()));
     // Room left for B's centre inside A along each of A's axes.
     const double rx = a.half.x() - testing::supportRadius(b, a.axis);
     const double ry = a.half.y() - testing::supportRadius(b, a.perp());
-    b.center = a.center + a.axis * rng.uniform(-0.99, 0.99) * rx +
-               a.perp() * rng.uniform(-0.99, 0.99) * ry;
+    const double along = rng.uniform(-0.99, 0.99);
+    const double across = rng.uniform(-0.99, 0.99);
+    b.center = a.center + a.axis * along * rx + a.perp() * across * ry;
     return std::pair{a, b};
   });
   EXPECT_EQ(s.exact_hits, s.cases) << "every contained pair overlaps";
@@ -180,11 +186,19 @@ TEST(SatObb2Random, Containment) {
 TEST(SatObb2Random, ExactTouching) {
   const ClassStats s = runBoxClass(1006, [](Random& rng) {
     const auto grid = [&](int lo, int hi) { return rng.integer(lo, hi) / 8.0; };
-    const Eigen::Vector2d base{std::round(rng.uniform(-1e7, 1e7)) + grid(0, 7),
-                               std::round(rng.uniform(-1e7, 1e7)) + grid(0, 7)};
-    const Obb2 a = Obb2::fromDegrees(base, 90.0 * rng.integer(0, 3), grid(1, 800), grid(1, 800));
-    Obb2 b = Obb2::fromDegrees(Eigen::Vector2d::Zero(), 90.0 * rng.integer(0, 3), grid(1, 800),
-                               grid(1, 800));
+    const auto coordinate = [&] {
+      const double whole = std::round(rng.uniform(-1e7, 1e7));
+      return whole + grid(0, 7);
+    };
+    const auto gridBox = [&](const Eigen::Vector2d& center) {
+      const double heading = 90.0 * rng.integer(0, 3);
+      const double length = grid(1, 800);
+      const double width = grid(1, 800);
+      return Obb2::fromDegrees(center, heading, length, width);
+    };
+    const Eigen::Vector2d base{coordinate(), coordinate()};
+    const Obb2 a = gridBox(base);
+    Obb2 b = gridBox(Eigen::Vector2d::Zero());
     const Eigen::Vector2d ea = a.aabb().size() / 2, eb = b.aabb().size() / 2;
     const int k = rng.integer(0, 1);
     const int l = 1 - k;

@@ -29,7 +29,8 @@ inline SweepCase sweepCase(Random& rng, const Eigen::Vector2d& target, double ta
   SweepCase c;
   c.a = rng.extremeBox(Eigen::Vector2d::Zero());
   const double reach = c.a.half.norm() + target_radius;
-  const Eigen::Vector2d away = rng.direction() * reach * rng.uniform(0.5, 8.0);
+  const Eigen::Vector2d direction = rng.direction();
+  const Eigen::Vector2d away = direction * reach * rng.uniform(0.5, 8.0);
   c.a.center = target + away;
   const double angle = rng.uniform(-0.6, 0.6);
   const Eigen::Vector2d towards = -away.normalized();

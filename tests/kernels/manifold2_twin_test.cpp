@@ -182,10 +182,10 @@ void runPairs(std::uint64_t seed, double offset, Failures& f, int& with_points) 
   const int n = testing::scaledCount(100000);
   const ManifoldSettings settings[3] = {{}, {0.0, 1.0, 0.0}, {0.05, 0.95, 0.002}};
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d base = rng.direction() * rng.uniform(0.0, offset);
+    const Eigen::Vector2d base = rng.offset(0.0, offset);
     const Obb2 a = rng.extremeBox(base);
     Obb2 b = rng.extremeBox(base);
-    b.center += rng.direction() * rng.uniform(0.0, 1.2 * (a.half.norm() + b.half.norm()));
+    b.center += rng.offset(0.0, 1.2 * (a.half.norm() + b.half.norm()));
     if (i % 4 == 0) {
       // Axis-aligned and exactly touching along a face, where ties decide.
       b.axis = rng.integer(0, 1) == 0 ? a.axis : a.perp();

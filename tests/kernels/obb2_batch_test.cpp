@@ -46,19 +46,20 @@ Obb2 boxFor(const Obb2& a, Random& rng) {
   }
   Obb2 b = kind == 5 ? rng.extremeBox({0, 0}) : rng.box({0, 0}, 0.1, 20.0);
   if (kind == 2) {
-    const double heading = std::atan2(a.axis.y(), a.axis.x()) +
-                           rng.integer(0, 3) * 0.5 * std::numbers::pi +
-                           rng.sign() * rng.logUniform(1e-15, 1e-3);
+    const int quarters = rng.integer(0, 3);
+    const double heading = std::atan2(a.axis.y(), a.axis.x()) + quarters * 0.5 * std::numbers::pi +
+                           rng.signedLogUniform(1e-15, 1e-3);
     b.axis = unitFromRadians(heading);
   }
   if (kind == 1) {
-    b.center = a.center + rng.direction() * rng.uniform(0.0, 1.2 * (a.half.norm() + b.half.norm()));
+    b.center = a.center + rng.offset(0.0, 1.2 * (a.half.norm() + b.half.norm()));
     return b;
   }
   if (kind == 4) {
     b.half = a.half.cwiseMin(Eigen::Vector2d(1, 1)) * rng.uniform(0.01, 0.3);
-    b.center = a.center + a.axis * rng.uniform(-0.5, 0.5) * a.half.x() +
-               a.perp() * rng.uniform(-0.5, 0.5) * a.half.y();
+    const double along = rng.uniform(-0.5, 0.5);
+    const double across = rng.uniform(-0.5, 0.5);
+    b.center = a.center + a.axis * along * a.half.x() + a.perp() * across * a.half.y();
     return b;
   }
   // Near touching along one of the four face normals, with a gap of either sign.
@@ -69,8 +70,10 @@ Obb2 boxFor(const Obb2& a, Random& rng) {
                                                       : b.perp());
   const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
   const Eigen::Vector2d lateral{-d.y(), d.x()};
-  b.center = a.center + d * (reach + rng.sign() * rng.logUniform(1e-9, 1.0)) +
-             lateral * rng.uniform(-0.5, 0.5) * std::min(a.half.minCoeff(), b.half.minCoeff());
+  const double gap = rng.signedLogUniform(1e-9, 1.0);
+  const double shift = rng.uniform(-0.5, 0.5);
+  b.center = a.center + d * (reach + gap) +
+             lateral * shift * std::min(a.half.minCoeff(), b.half.minCoeff());
   return b;
 }
 
@@ -79,7 +82,7 @@ Obb2 boxFor(const Obb2& a, Random& rng) {
 Obb2 queryBox(Random& rng) {
   switch (rng.integer(0, 3)) {
     case 0:
-      return rng.box(rng.direction() * rng.uniform(0, 50), 0.1, 20.0);
+      return rng.box(rng.offset(0, 50), 0.1, 20.0);
     case 1:
       return rng.box(rng.farPoint(1e7), 0.1, 20.0);
     case 2: {
@@ -89,7 +92,7 @@ Obb2 queryBox(Random& rng) {
               {dyadic(rng, 0.25, 10.0), dyadic(rng, 0.25, 10.0)}};
     }
     default:
-      return rng.extremeBox(rng.direction() * rng.uniform(0, 1000));
+      return rng.extremeBox(rng.offset(0, 1000));
   }
 }
 
@@ -251,7 +254,8 @@ TEST(Obb2Batch, TouchingCountsAsHitFarFromTheOrigin) {
 std::vector<Obb2> carsAround(const Obb2& a, Random& rng, int n, double reach) {
   std::vector<Obb2> boxes;
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d c = a.center + rng.direction() * reach * std::sqrt(rng.uniform(0, 1));
+    const Eigen::Vector2d direction = rng.direction();
+    const Eigen::Vector2d c = a.center + direction * reach * std::sqrt(rng.uniform(0, 1));
     boxes.push_back({c, rng.direction(), {rng.uniform(1.75, 2.75), rng.uniform(0.8, 1.1)}});
   }
   return boxes;
@@ -308,8 +312,10 @@ TEST(Obb2Batch, NearTouchingPairsAtTheFilterMarginMatchScalar) {
                                                           : b.perp());
       const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
       const Eigen::Vector2d lateral{-d.y(), d.x()};
-      b.center = a.center + d * (reach + rng.sign() * rng.logUniform(1e-12, 1e-3)) +
-                 lateral * rng.uniform(-0.4, 0.4) * std::min(a.half.minCoeff(), b.half.minCoeff());
+      const double gap = rng.signedLogUniform(1e-12, 1e-3);
+      const double shift = rng.uniform(-0.4, 0.4);
+      b.center = a.center + d * (reach + gap) +
+                 lateral * shift * std::min(a.half.minCoeff(), b.half.minCoeff());
       boxes.push_back(b);
     }
     // Now and then a far box widens the batch, which moves its reference point away from A.

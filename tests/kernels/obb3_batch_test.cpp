@@ -44,7 +44,7 @@ std::vector<Obb3> batchFor(const Pair3& p, std::mt19937_64& rng) {
     Obb3 b = p.b;
     Eigen::Vector3d n = test3::candidateAxis(p.a, p.b, static_cast<int>(rng() % 15));
     if (n.isZero()) n = test3::randomUnit(rng);
-    test3::placeAtGap(p.a, b, n * test3::randomSign(rng), test3::randomGap(rng));
+    test3::placeAtRandomGap(rng, p.a, b, n);
     boxes.push_back(b);
   }
   return boxes;
@@ -117,8 +117,7 @@ TEST(Obb3Batch, StoresTheBoxesExactly) {
   std::mt19937_64 rng(3);
   std::vector<Obb3> boxes;
   for (int i = 0; i < 6; ++i) {
-    boxes.push_back(Obb3::fromQuaternion(test3::randomCenter(rng), test3::randomRotation(rng),
-                                         test3::randomSize(rng)));
+    boxes.push_back(test3::randomBox(rng));
   }
   const Obb3Batch batch(boxes);
   ASSERT_EQ(batch.size(), boxes.size());
@@ -193,7 +192,7 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
     std::vector<Obb3> boxes{first.b};
     const int count = 4 + static_cast<int>(rng() % 29);
     while (static_cast<int>(boxes.size()) < count) {
-      Obb3 b = Obb3::fromQuaternion({0, 0, 0}, test3::randomRotation(rng), test3::randomSize(rng));
+      Obb3 b = test3::randomBoxAt(rng, {0, 0, 0});
       if (angles) {
         // Another near-parallel pair's relative rotation, carried over to this A.
         const Pair3 other = test3::nearParallelPair(rng, 1e-3, 0.2);
@@ -202,7 +201,7 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
                                  2.0 * other.b.half);
       }
       const double reach = first.a.half.norm() + b.half.norm();
-      b.center = first.a.center + test3::randomUnit(rng) * test3::uniform(rng, 0.0, 1.5 * reach);
+      b.center = first.a.center + test3::randomOffset(rng, 0.0, 1.5 * reach);
       boxes.push_back(b);
     }
     const PathResults on = onEveryPath(first.a, Obb3Batch(boxes));

@@ -115,8 +115,11 @@ TEST(AnalogDrive, SameAnalogSequenceSameKeys) {
   std::uniform_int_distribution<int> axis(-32768, 32767);
   std::vector<PadState> pads;
   for (int i = 0; i < 500; ++i) {
-    pads.push_back(
-        padFromAxes(axis(rng), axis(rng), std::abs(axis(rng)), std::abs(axis(rng)), false));
+    const int left_x = axis(rng);
+    const int left_y = axis(rng);
+    const int trigger_left = std::abs(axis(rng));
+    const int trigger_right = std::abs(axis(rng));
+    pads.push_back(padFromAxes(left_x, left_y, trigger_left, trigger_right, false));
   }
   AnalogDrive a, b;
   for (const PadState& p : pads) EXPECT_EQ(a.sample(p), b.sample(p));

@@ -62,12 +62,12 @@ TEST(Degenerate2d, BoxesFromAMillimetreToAKilometre) {
     const Obb2 a = wideRangeBox(rng, base);
     Obb2 b = wideRangeBox(rng, base);
     // Against one of A's faces at a gap of 1e-9..1 m either side, or anywhere near A.
-    const Eigen::Vector2d d = (rng.integer(0, 1) == 0 ? a.axis : a.perp()) * rng.sign();
+    const Eigen::Vector2d face = rng.integer(0, 1) == 0 ? a.axis : a.perp();
+    const Eigen::Vector2d d = face * rng.sign();
     const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
-    b.center =
-        rng.integer(0, 2) != 0
-            ? Eigen::Vector2d(a.center + d * (reach + rng.sign() * rng.logUniform(1e-9, 1.0)))
-            : Eigen::Vector2d(a.center + rng.direction() * rng.uniform(0.0, 1.2 * reach));
+    b.center = rng.integer(0, 2) != 0
+                   ? Eigen::Vector2d(a.center + d * (reach + rng.signedLogUniform(1e-9, 1.0)))
+                   : Eigen::Vector2d(a.center + rng.offset(0.0, 1.2 * reach));
     checkBoxes(a, b, i, f, s);
   }
   report("2D boxes 1 mm..1 km, aspect <= 1e4, to 1e7 m", f, s);
@@ -84,15 +84,18 @@ TEST(Degenerate2d, NearParallelAtEverySize) {
     const Obb2 a = wideRangeBox(rng, base);
     Obb2 b = wideRangeBox(rng, base);
     // B turned to within 1e-15..1e-3 rad of A (plus a quarter turn), then placed against A's face.
-    const double turn =
-        rng.integer(0, 3) * 0.5 * std::numbers::pi + rng.sign() * rng.logUniform(1e-15, 1e-3);
+    const int quarters = rng.integer(0, 3);
+    const double turn = quarters * 0.5 * std::numbers::pi + rng.signedLogUniform(1e-15, 1e-3);
     b.axis = {a.axis.x() * std::cos(turn) - a.axis.y() * std::sin(turn),
               a.axis.y() * std::cos(turn) + a.axis.x() * std::sin(turn)};
     b.axis.normalize();
-    const Eigen::Vector2d d = (rng.integer(0, 1) == 0 ? a.axis : a.perp()) * rng.sign();
+    const Eigen::Vector2d face = rng.integer(0, 1) == 0 ? a.axis : a.perp();
+    const Eigen::Vector2d d = face * rng.sign();
     const double reach = testing::supportRadius(a, d) + testing::supportRadius(b, d);
-    b.center = a.center + d * (reach + rng.sign() * rng.logUniform(1e-9, 1e-3)) +
-               Eigen::Vector2d(-d.y(), d.x()) * rng.uniform(-1.0, 1.0) * a.half.minCoeff();
+    const double gap = rng.signedLogUniform(1e-9, 1e-3);
+    const double shift = rng.uniform(-1.0, 1.0);
+    b.center =
+        a.center + d * (reach + gap) + Eigen::Vector2d(-d.y(), d.x()) * shift * a.half.minCoeff();
     checkBoxes(a, b, i, f, s);
   }
   report("2D near-parallel 1e-15..1e-3 rad, 1 mm..1 km", f, s);
@@ -113,10 +116,20 @@ TEST(Degenerate2d, ExactTouchingSharedEdgesAndCorners) {
       return std::ldexp(std::round(std::ldexp(rng.uniform(lo, hi), 10)), -10);
     };
     const auto side = [&] { return std::max(std::ldexp(1.0, -10), grid(0.0, 1024.0)); };
+    const auto gridBox = [&](const Eigen::Vector2d& center) {
+      const double heading = 90.0 * rng.integer(0, 3);
+      const double length = side();
+      const double width = side();
+      return Obb2::fromDegrees(center, heading, length, width);
+    };
     const double far = rng.integer(0, 1) == 0 ? 0.0 : 4194304.0;
-    const Eigen::Vector2d base{rng.sign() * far + grid(-8, 8), rng.sign() * far + grid(-8, 8)};
-    const Obb2 a = Obb2::fromDegrees(base, 90.0 * rng.integer(0, 3), side(), side());
-    Obb2 b = Obb2::fromDegrees({0, 0}, 90.0 * rng.integer(0, 3), side(), side());
+    const auto coordinate = [&] {
+      const double sign = rng.sign();
+      return sign * far + grid(-8, 8);
+    };
+    const Eigen::Vector2d base{coordinate(), coordinate()};
+    const Obb2 a = gridBox(base);
+    Obb2 b = gridBox({0, 0});
     const Eigen::Vector2d ea = a.aabb().size() / 2, eb = b.aabb().size() / 2;
     const int k = rng.integer(0, 1), l = 1 - k;
     Eigen::Vector2d offset;
@@ -150,9 +163,10 @@ TEST(Degenerate2d, SliverPolygons) {
     // Ellipse polygons with radii 1 mm..1 km independently: aspect ratios up to 1e6 (fromPoints
     // rejects the ones it cannot tell from collinear).
     const ConvexPolygon a = rng.polygon(base, 1e-3, 1e3);
+    const ConvexPolygon shape = rng.polygon(Eigen::Vector2d::Zero(), 1e-3, 1e3);
+    const Eigen::Vector2d direction = rng.direction();
     const ConvexPolygon b =
-        cardemo::testing::translated(rng.polygon(Eigen::Vector2d::Zero(), 1e-3, 1e3),
-                                     base + rng.direction() * rng.logUniform(1e-3, 2e3));
+        cardemo::testing::translated(shape, base + direction * rng.logUniform(1e-3, 2e3));
     const exact::ExactResult ex = exact::collidePolygons(a, b);
     const auto pa = cardemo::testing::pointsOf(a), pb = cardemo::testing::pointsOf(b);
     cardemo::testing::checkAgainstExact(collidePolygons(a, b), ex.hit, ex.separation, pa, pb,

@@ -56,7 +56,10 @@ class Extremes {
   // A box near another (so that the pair is close to touching at its scale).
   Obb2 boxNear(const Obb2& other) {
     Obb2 b = box();
-    if (pick(2) == 0) b.center = other.center + unit() * size();
+    if (pick(2) == 0) {
+      const Eigen::Vector2d u = unit();
+      b.center = other.center + u * size();
+    }
     return fitted(b);
   }
   // The box with its centre pulled in so that it lies within kMaxCoordinate (inDomain).
@@ -85,14 +88,16 @@ class Extremes {
   Eigen::Quaterniond quaternion() {
     std::normal_distribution<double> g;
     const double s = magnitude();
-    Eigen::Quaterniond q(g(rng_), g(rng_), g(rng_), g(rng_));
+    Eigen::Quaterniond q{g(rng_), g(rng_), g(rng_), g(rng_)};
     q.coeffs() *= s > 0.0 ? s : 1.0;
     if (!q.coeffs().allFinite() || q.coeffs().cwiseAbs().maxCoeff() == 0.0) q = {1, 0, 0, 0};
     return q;
   }
   Obb3 box3() {
-    Obb3 b = Obb3::fromQuaternion({coordinate(), coordinate(), coordinate()}, quaternion(),
-                                  {size(), size(), size()});
+    const Eigen::Vector3d center{coordinate(), coordinate(), coordinate()};
+    const Eigen::Quaterniond q = quaternion();
+    const Eigen::Vector3d sizes{size(), size(), size()};
+    Obb3 b = Obb3::fromQuaternion(center, q, sizes);
     const double room = kMaxCoordinate - b.half.sum();
     const double c = b.center.cwiseAbs().maxCoeff();
     if (c > room) b.center *= 0.999 * room / c;
@@ -151,7 +156,8 @@ TEST(FiniteOutput, Polygons) {
   int failures = 0, accepted = 0;
   for (std::int64_t k = 0; k < n && failures < 5; ++k) {
     const Obb2 box = x.box();
-    const std::optional<ConvexPolygon> p = x.polygon(box.center + x.unit() * x.size());
+    const Eigen::Vector2d u = x.unit();
+    const std::optional<ConvexPolygon> p = x.polygon(box.center + u * x.size());
     const std::optional<ConvexPolygon> q = x.polygon(x.pick(2) == 0 ? box.center : x.point());
     if (!p || !q) continue;
     ++accepted;
@@ -185,8 +191,8 @@ TEST(FiniteOutput, PolygonsScaleExactlyByPowersOfTwo) {
   testing::Random rng(0xf1a5);
   const int n = static_cast<int>(scaled(5000));
   for (int i = 0; i < n; ++i) {
-    const ConvexPolygon a = rng.polygon(rng.direction() * rng.uniform(0.0, 10.0), 0.01, 10.0);
-    const ConvexPolygon b = rng.polygon(rng.direction() * rng.uniform(0.0, 10.0), 0.01, 10.0);
+    const ConvexPolygon a = rng.polygon(rng.offset(0.0, 10.0), 0.01, 10.0);
+    const ConvexPolygon b = rng.polygon(rng.offset(0.0, 10.0), 0.01, 10.0);
     const SatResult2 unit = collidePolygons(a, b);
     const exact::ExactResult ex = exact::collidePolygons(a, b);
     ASSERT_NEAR(unit.separation, ex.separation, testing::kSepTolerance) << i;
