@@ -20,9 +20,11 @@ constexpr double kOverlapTarget = 0.45;
 
 Obb2 randomCar(std::mt19937_64& rng, const Eigen::Vector2d& center) {
   std::uniform_real_distribution<double> length(3.5, 5.5), width(1.6, 2.2), turn(-180.0, 180.0);
-  const double heading = turn(rng);
-  const double car_length = length(rng);
+  // Width, length, heading: the order GCC took when the published pair sets were drawn, now on
+  // every compiler (argument order is unspecified).
   const double car_width = width(rng);
+  const double car_length = length(rng);
+  const double heading = turn(rng);
   return Obb2::fromDegrees(center, heading, car_length, car_width);
 }
 
@@ -220,9 +222,10 @@ std::vector<LotCar> randomLayout(std::size_t n) {
   cars.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double heading = turn(rng);
-    const Eigen::Vector2d center{pos(rng), pos(rng)};
-    const double car_length = length(rng);
+    // As randomCar: GCC's former order, the published layouts.
     const double car_width = width(rng);
+    const double car_length = length(rng);
+    const Eigen::Vector2d center{pos(rng), pos(rng)};
     cars.push_back({Obb2::fromDegrees(center, heading, car_length, car_width), heading});
   }
   return cars;
