@@ -55,8 +55,9 @@ struct WorldStats {
   std::int64_t broadphase_candidates = 0;  ///< Candidates sent to the narrow phase, summed.
   std::int64_t narrowphase_tests = 0;      ///< SAT tests run.
   std::int64_t contacts = 0;               ///< Frames x colliders in contact, summed.
-  std::int64_t substeps = 0;         ///< Extra collision sub-steps (sub-stepped mode, or rotation).
-  std::int64_t skipped_queries = 0;  ///< Steps where the player's box had not changed.
+  std::int64_t substeps = 0;  ///< Extra collision sub-steps (sub-stepped mode, or rotation).
+  /// Detections skipped (a step detects once or more): the player's box was the last detected.
+  std::int64_t skipped_queries = 0;
   /// Queries answered from the last grid query's grown box instead of the grid (the candidates
   /// are the same).
   std::int64_t reused_queries = 0;
