@@ -57,6 +57,7 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
        {{"broadphase_queries", s.broadphase_queries},
         {"broadphase_candidates", s.broadphase_candidates},
         {"narrowphase_tests", s.narrowphase_tests},
+        {"skipped_tests", s.skipped_tests},
         {"contacts", s.contacts},
         {"skipped_queries", s.skipped_queries},
         {"reused_queries", s.reused_queries},

@@ -38,27 +38,6 @@ double resistedSpeed(double v, const CarParams& p, double dt) {
 
 }  // namespace
 
-double SpeedLaw::rate(double v) const {
-  if (travel == 0.0) return 0.0;
-  const double push = limited && travel * v >= travel * limit ? 0.0 : command;
-  const double a = push - drag * v * std::abs(v) - rolling * travel;
-  // Stopped (or at rest and about to move): nothing here can push the car against its travel.
-  if (travel * v <= 0.0 && travel * a <= 0.0) return 0.0;
-  return a;
-}
-
-double SpeedLaw::alongTravel(double v) const {
-  if (travel > 0.0) return std::max(v, 0.0);
-  if (travel < 0.0) return std::min(v, 0.0);
-  return 0.0;
-}
-
-double SpeedLaw::endSpeed(double v) const {
-  const double along = alongTravel(v);
-  if (!capped) return along;
-  return travel > 0.0 ? std::min(along, limit) : std::max(along, limit);
-}
-
 SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params) {
   SpeedLaw law;
   law.drag = params.drag;

@@ -3,6 +3,9 @@
 /// semi-implicit Euler, explicit Euler, RK4 and exact-arc updates built on it (integrateCar picks
 /// one).
 
+#include <algorithm>
+#include <cmath>
+
 #include "sim/car.hpp"
 #include "sim/input_frame.hpp"
 
@@ -23,12 +26,29 @@ struct SpeedLaw {
   bool limited = false;  ///< True when `command` is the engine's, which switches off at `limit`.
   bool capped = false;   ///< True when the step's end speed is clamped to `limit`.
 
+  // rate, alongTravel and endSpeed are defined here (inline) because RK4 calls them 4 times a step.
+
   /// Acceleration at speed `v` (m/s^2); zero once the car has stopped against its travel.
-  [[nodiscard]] double rate(double v) const;
+  [[nodiscard]] double rate(double v) const {
+    if (travel == 0.0) return 0.0;
+    const double push = limited && travel * v >= travel * limit ? 0.0 : command;
+    const double a = push - drag * v * std::abs(v) - rolling * travel;
+    // Stopped (or at rest and about to move): nothing here can push the car against its travel.
+    if (travel * v <= 0.0 && travel * a <= 0.0) return 0.0;
+    return a;
+  }
   /// `v` clamped so that it never points against the direction of travel (m/s).
-  [[nodiscard]] double alongTravel(double v) const;
+  [[nodiscard]] double alongTravel(double v) const {
+    if (travel > 0.0) return std::max(v, 0.0);
+    if (travel < 0.0) return std::min(v, 0.0);
+    return 0.0;
+  }
   /// The speed at the end of a step: along the travel and within the reverse cap (m/s).
-  [[nodiscard]] double endSpeed(double v) const;
+  [[nodiscard]] double endSpeed(double v) const {
+    const double along = alongTravel(v);
+    if (!capped) return along;
+    return travel > 0.0 ? std::min(along, limit) : std::max(along, limit);
+  }
   /// The command alone as one explicit step from `v` over `dt` (semi-implicit Euler's first
   /// half): clamped at `limit` when capped, else toward zero, stopping exactly on it.
   [[nodiscard]] double commandedSpeed(double v, double dt) const;

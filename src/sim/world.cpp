@@ -4,7 +4,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
+#include <span>
 #include <utility>
 
 #include "geometry/angle.hpp"
@@ -15,6 +17,8 @@ namespace {
 
 // Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
 constexpr double kNoContact = 2.0;
+// narrowPhase's `moved` when the last narrow phase's gaps do not apply (test every candidate).
+constexpr double kNoBound = std::numeric_limits<double>::infinity();
 // Damage points (speed x damage_per_mps) this close above an integer still round down to it.
 constexpr double kDamageRounding = 1e-9;
 // How far (metres) a grid query reaches past the query box on each side, so that the next steps'
@@ -22,6 +26,14 @@ constexpr double kDamageRounding = 1e-9;
 // AABBs of Box2D's b2DynamicTree, b2_aabbExtension = 0.1 m, for the same reason). A larger margin
 // runs fewer grid queries but filters a longer list each step.
 constexpr double kCoverMargin = 1.0;
+
+// The rounding margin of the translation bound (World::detectAfterPush), metres. A computed SAT
+// separation is within a few ulps of the coordinates and extents involved (about 1e-15 of them,
+// docs/architecture.md) of the exact one, and the push rounds the car's centre to an ulp of its
+// coordinates: this is a thousand times both, and the contract's 1e-6 m tolerance near the origin.
+double verdictMargin(const Eigen::Vector2d& at, double scene_scale) {
+  return 1e-6 + 1e-12 * (std::abs(at.x()) + std::abs(at.y()) + scene_scale);
+}
 
 StaticColliders collidersOf(const Scene& scene) {
   std::vector<Obb2> boxes;
@@ -61,6 +73,22 @@ bool sameState(const CarState& a, const CarState& b) {
          sameBits(a.surface_normal.y(), b.surface_normal.y());
 }
 
+// The gap that narrowPhase recorded for `id` in `ids`/`gaps`, or -infinity when `id` was not a
+// candidate then. Both lists are usually the same grid answer filtered in the same order, so the
+// search resumes after the last match (`hint`).
+double gapBefore(std::uint32_t id, std::span<const std::uint32_t> ids, const double* gaps,
+                 std::size_t& hint) {
+  const std::size_t n = ids.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = hint + i < n ? hint + i : hint + i - n;
+    if (ids[k] == id) {
+      hint = k + 1;
+      return gaps[k];
+    }
+  }
+  return -kNoBound;
+}
+
 }  // namespace
 
 World::World(Scene scene, const WorldSettings& settings)
@@ -82,6 +110,10 @@ World::World(Scene scene, const WorldSettings& settings)
   ++stats_.broadphase_builds;
   half_min_extent_ = 0.5 * std::min(params_.length, params_.width);
   half_diagonal_ = 0.5 * std::sqrt(params_.length * params_.length + params_.width * params_.width);
+  for (const Aabb2& b : colliders_.bounds()) {
+    verdict_scale_ = std::max({verdict_scale_, std::abs(b.min.x()), std::abs(b.min.y()),
+                               std::abs(b.max.x()), std::abs(b.max.y())});
+  }
 
   // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
   const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
@@ -91,6 +123,9 @@ World::World(Scene scene, const WorldSettings& settings)
   previous_contacts_.reserve(expected);
   contact_speed_.reserve(expected);
   detected_.reserve(expected);
+  candidate_gaps_.reserve(expected);
+  pushed_ids_.reserve(expected);
+  pushed_gaps_.reserve(expected);
   hits_.reserve(64);
 
   // Frame 0: contacts of the loaded scene are hits at frame 0; the car is not moved.
@@ -119,7 +154,30 @@ void World::detect() {
   }
   const Aabb2 bounds = box.aabb();
   gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
-  narrowPhase(box, bounds);
+  narrowPhase(box, bounds, kNoBound);
+}
+
+void World::detectAfterPush() {
+  // A push moves the box without turning it, and a translation by d changes the gap along every
+  // separating axis by at most |d|, so the SAT separation (the largest gap) by at most |d| too: a
+  // candidate farther than the push (plus rounding) is still separated and need not be tested.
+  const Obb2 box = carBox();
+  const bool translated =
+      settings_.schemes.translation_bound && have_detected_ &&
+      box.axis.x() == detected_box_.axis.x() && box.axis.y() == detected_box_.axis.y() &&
+      box.half.x() == detected_box_.half.x() && box.half.y() == detected_box_.half.y();
+  if (!translated || sameBox(box, detected_box_)) {
+    detect();
+    return;
+  }
+  const double dx = box.center.x() - detected_box_.center.x();
+  const double dy = box.center.y() - detected_box_.center.y();
+  const double moved = std::sqrt(dx * dx + dy * dy) + verdictMargin(box.center, verdict_scale_);
+  pushed_ids_.swap(candidates_);
+  pushed_gaps_.swap(candidate_gaps_);
+  const Aabb2 bounds = box.aabb();
+  gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
+  narrowPhase(box, bounds, moved);
 }
 
 void World::gatherCandidates(const Aabb2& query) {
@@ -142,12 +200,26 @@ void World::gatherCandidates(const Aabb2& query) {
   stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
 }
 
-void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
+void World::narrowPhase(const Obb2& box, const Aabb2& bounds, double moved) {
   detected_.clear();
   detected_bounds_ = bounds;
-  for (const std::uint32_t id : candidates_) {
+  // Only grown (entries past the candidates are unused), so that most calls do no vector work.
+  if (candidate_gaps_.size() < candidates_.size()) candidate_gaps_.resize(candidates_.size());
+  double* const gaps = candidate_gaps_.data();
+  std::size_t hint = 0;
+  for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    const std::uint32_t id = candidates_[k];
+    if (moved != kNoBound) {
+      const double gap = gapBefore(id, pushed_ids_, pushed_gaps_.data(), hint) - moved;
+      if (gap > 0.0) {
+        ++stats_.skipped_tests;
+        gaps[k] = gap;
+        continue;
+      }
+    }
     ++stats_.narrowphase_tests;
     SatResult2 r = colliders_.visit(id, [&box](const auto& s) { return collidePlayer(box, s); });
+    gaps[k] = r.separation;
     if (r.separation <= 0.0) {
       if (touching_[id] == 0 && !previous_contacts_.empty()) smoothSeam(box, id, r);
       detected_.push_back({id, r.normal, r.separation});
@@ -347,7 +419,7 @@ void World::resolveContacts() {
     const Eigen::Vector2d n = deepest->normal;
     car_.position.x() -= n.x() * push;
     car_.position.y() -= n.y() * push;
-    detect();
+    detectAfterPush();
     mergeDetected();
   }
   // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
@@ -355,7 +427,7 @@ void World::resolveContacts() {
   wall_contact_ = scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
                   keepInsideWalls(car_, params_, *scene_.bounds, wall_normal_);
   if (wall_contact_) {
-    detect();
+    detectAfterPush();
     mergeDetected();
   }
 }

@@ -54,7 +54,10 @@ struct WorldStats {
   std::int64_t broadphase_queries = 0;     ///< Grid queries actually run.
   std::int64_t broadphase_candidates = 0;  ///< Candidates sent to the narrow phase, summed.
   std::int64_t narrowphase_tests = 0;      ///< SAT tests run.
-  std::int64_t contacts = 0;               ///< Frames x colliders in contact, summed.
+  /// Candidates whose SAT test was skipped after a push-out: their separation before the push
+  /// exceeded the distance pushed (SimulationSchemes::translation_bound).
+  std::int64_t skipped_tests = 0;
+  std::int64_t contacts = 0;  ///< Frames x colliders in contact, summed.
   std::int64_t substeps = 0;  ///< Extra collision sub-steps (sub-stepped mode, or rotation).
   /// Detections skipped (a step detects once or more): the player's box was the last detected.
   std::int64_t skipped_queries = 0;
@@ -148,6 +151,14 @@ class World {
   std::vector<HitEvent> hits_;
   std::vector<ActiveContact> contacts_;
   std::vector<std::uint32_t> candidates_;
+  // Entry k, for each candidates_[k] after a narrow phase: a lower bound on its separation from
+  // detected_box_, metres (the SAT separation, or for a skipped test the bound carried over). It
+  // can be longer than candidates_; the entries past it are unused.
+  std::vector<double> candidate_gaps_;
+  std::vector<std::uint32_t>
+      pushed_ids_;                   // detectAfterPush scratch: the candidates before the push
+  std::vector<double> pushed_gaps_;  // and their gaps
+  double verdict_scale_ = 0.0;  // largest |coordinate| of the colliders' bounds, for the margin
   std::vector<std::uint8_t> touching_;  // per collider: in contact at the previous frame
   // Per collider: the last frame of its crash window (-1: none), the damage that crash has charged
   // so far, and its crash number.
@@ -180,7 +191,10 @@ class World {
       false;  // the last step left the car bitwise where it was, at rest, touching nothing
 
   void detect();
-  void narrowPhase(const Obb2& box, const Aabb2& bounds);
+  void detectAfterPush();
+  // Tests the candidates at `box`; with a finite `moved` (the box was translated by at most that
+  // since the last narrow phase, rounding included), skips those whose gap then exceeded it.
+  void narrowPhase(const Obb2& box, const Aabb2& bounds, double moved);
   void smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const;
   void gatherCandidates(const Aabb2& query);
   void mergeDetected();
