@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -17,8 +18,6 @@ namespace {
 
 // Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
 constexpr double kNoContact = 2.0;
-// narrowPhase's `moved` when the last narrow phase's gaps do not apply (test every candidate).
-constexpr double kNoBound = std::numeric_limits<double>::infinity();
 // Damage points (speed x damage_per_mps) this close above an integer still round down to it.
 constexpr double kDamageRounding = 1e-9;
 // How far (metres) a grid query reaches past the query box on each side, so that the next steps'
@@ -86,7 +85,7 @@ double gapBefore(std::uint32_t id, std::span<const std::uint32_t> ids, const dou
       return gaps[k];
     }
   }
-  return -kNoBound;
+  return -std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -123,9 +122,11 @@ World::World(Scene scene, const WorldSettings& settings)
   previous_contacts_.reserve(expected);
   contact_speed_.reserve(expected);
   detected_.reserve(expected);
-  candidate_gaps_.reserve(expected);
   pushed_ids_.reserve(expected);
-  pushed_gaps_.reserve(expected);
+  // Sized, not only reserved: the two swap at each push, and a narrow phase then only grows one
+  // when the candidates outnumber it.
+  candidate_gaps_.resize(expected);
+  pushed_gaps_.resize(expected);
   hits_.reserve(64);
 
   // Frame 0: contacts of the loaded scene are hits at frame 0; the car is not moved.
@@ -154,30 +155,24 @@ void World::detect() {
   }
   const Aabb2 bounds = box.aabb();
   gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
-  narrowPhase(box, bounds, kNoBound);
+  narrowPhase(box, bounds);
 }
 
-void World::detectAfterPush() {
+void World::detectAfterPush(double pushed) {
   // A push moves the box without turning it, and a translation by d changes the gap along every
   // separating axis by at most |d|, so the SAT separation (the largest gap) by at most |d| too: a
   // candidate farther than the push (plus rounding) is still separated and need not be tested.
-  const Obb2 box = carBox();
-  const bool translated =
-      settings_.schemes.translation_bound && have_detected_ &&
-      box.axis.x() == detected_box_.axis.x() && box.axis.y() == detected_box_.axis.y() &&
-      box.half.x() == detected_box_.half.x() && box.half.y() == detected_box_.half.y();
-  if (!translated || sameBox(box, detected_box_)) {
+  if (!settings_.schemes.translation_bound || !have_detected_) {
     detect();
     return;
   }
-  const double dx = box.center.x() - detected_box_.center.x();
-  const double dy = box.center.y() - detected_box_.center.y();
-  const double moved = std::sqrt(dx * dx + dy * dy) + verdictMargin(box.center, verdict_scale_);
+  const Obb2 box = carBox();
+  assert(box.axis == detected_box_.axis && box.half == detected_box_.half);
   pushed_ids_.swap(candidates_);
   pushed_gaps_.swap(candidate_gaps_);
   const Aabb2 bounds = box.aabb();
   gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
-  narrowPhase(box, bounds, moved);
+  narrowPhaseAfterPush(box, bounds, pushed + verdictMargin(box.center, verdict_scale_));
 }
 
 void World::gatherCandidates(const Aabb2& query) {
@@ -200,29 +195,43 @@ void World::gatherCandidates(const Aabb2& query) {
   stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
 }
 
-void World::narrowPhase(const Obb2& box, const Aabb2& bounds, double moved) {
+inline double* World::beginNarrowPhase(const Aabb2& bounds) {
   detected_.clear();
   detected_bounds_ = bounds;
-  // Only grown (entries past the candidates are unused), so that most calls do no vector work.
   if (candidate_gaps_.size() < candidates_.size()) candidate_gaps_.resize(candidates_.size());
-  double* const gaps = candidate_gaps_.data();
+  return candidate_gaps_.data();
+}
+
+[[gnu::always_inline]] inline void World::testCandidate(const Obb2& box, std::uint32_t id,
+                                                        double& gap) {
+  SatResult2 r = colliders_.visit(id, [&box](const auto& s) { return collidePlayer(box, s); });
+  gap = r.separation;
+  if (r.separation <= 0.0) {
+    if (touching_[id] == 0 && !previous_contacts_.empty()) smoothSeam(box, id, r);
+    detected_.push_back({id, r.normal, r.separation});
+  }
+}
+
+void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
+  double* const gaps = beginNarrowPhase(bounds);
+  for (std::size_t k = 0; k < candidates_.size(); ++k) testCandidate(box, candidates_[k], gaps[k]);
+  stats_.narrowphase_tests += static_cast<std::int64_t>(candidates_.size());
+  detected_box_ = box;
+  have_detected_ = true;
+}
+
+void World::narrowPhaseAfterPush(const Obb2& box, const Aabb2& bounds, double moved) {
+  double* const gaps = beginNarrowPhase(bounds);
   std::size_t hint = 0;
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     const std::uint32_t id = candidates_[k];
-    if (moved != kNoBound) {
-      const double gap = gapBefore(id, pushed_ids_, pushed_gaps_.data(), hint) - moved;
-      if (gap > 0.0) {
-        ++stats_.skipped_tests;
-        gaps[k] = gap;
-        continue;
-      }
-    }
-    ++stats_.narrowphase_tests;
-    SatResult2 r = colliders_.visit(id, [&box](const auto& s) { return collidePlayer(box, s); });
-    gaps[k] = r.separation;
-    if (r.separation <= 0.0) {
-      if (touching_[id] == 0 && !previous_contacts_.empty()) smoothSeam(box, id, r);
-      detected_.push_back({id, r.normal, r.separation});
+    const double gap = gapBefore(id, pushed_ids_, pushed_gaps_.data(), hint) - moved;
+    if (gap > 0.0) {
+      ++stats_.skipped_tests;
+      gaps[k] = gap;
+    } else {
+      ++stats_.narrowphase_tests;
+      testCandidate(box, id, gaps[k]);
     }
   }
   detected_box_ = box;
@@ -419,7 +428,7 @@ void World::resolveContacts() {
     const Eigen::Vector2d n = deepest->normal;
     car_.position.x() -= n.x() * push;
     car_.position.y() -= n.y() * push;
-    detectAfterPush();
+    detectAfterPush(push);
     mergeDetected();
   }
   // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
@@ -427,7 +436,7 @@ void World::resolveContacts() {
   wall_contact_ = scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
                   keepInsideWalls(car_, params_, *scene_.bounds, wall_normal_);
   if (wall_contact_) {
-    detectAfterPush();
+    detect();
     mergeDetected();
   }
 }

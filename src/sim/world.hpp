@@ -191,10 +191,16 @@ class World {
       false;  // the last step left the car bitwise where it was, at rest, touching nothing
 
   void detect();
-  void detectAfterPush();
-  // Tests the candidates at `box`; with a finite `moved` (the box was translated by at most that
-  // since the last narrow phase, rounding included), skips those whose gap then exceeded it.
-  void narrowPhase(const Obb2& box, const Aabb2& bounds, double moved);
+  // Detects after a push-out that translated the car by at most `pushed` metres (rounding aside)
+  // since the last narrow phase: candidates whose gap then exceeded that are not tested again.
+  void detectAfterPush(double pushed);
+  void narrowPhase(const Obb2& box, const Aabb2& bounds);
+  // narrowPhase after a translation by at most `moved` (rounding included) since the last one.
+  void narrowPhaseAfterPush(const Obb2& box, const Aabb2& bounds, double moved);
+  // Starts a narrow phase over candidates_ and returns the array for their gaps.
+  double* beginNarrowPhase(const Aabb2& bounds);
+  // Tests one candidate at `box`: stores its gap and, when it touches, adds the contact.
+  void testCandidate(const Obb2& box, std::uint32_t id, double& gap);
   void smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const;
   void gatherCandidates(const Aabb2& query);
   void mergeDetected();
