@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "../support/test_scale.hpp"
 #include "collision/narrow_phase.hpp"
@@ -40,14 +42,32 @@ std::string describeContacts(const World& w) {
   return out;
 }
 
+// A random lot; odd seeds add polygon obstacles in and beside the aisle (a triangle, a turned
+// pentagon, a kerb), whose separations come from the polygon SAT.
+Scene lotFor(int seed) {
+  Scene scene = test::parkingLot(static_cast<std::uint64_t>(seed));
+  if (seed % 2 == 1) {
+    const std::vector<Eigen::Vector2d> triangle{{6.0, 1.5}, {9.0, 2.5}, {7.0, 3.5}};
+    std::vector<Eigen::Vector2d> pentagon;
+    for (int k = 0; k < 5; ++k) {
+      const double angle = 0.3 + 1.2566370614359172 * k;
+      pentagon.push_back({-9.0 + 1.2 * std::cos(angle), -2.0 + 1.2 * std::sin(angle)});
+    }
+    scene.obstacles.push_back({"triangle", *ConvexPolygon::fromPoints(triangle)});
+    scene.obstacles.push_back({"pentagon", *ConvexPolygon::fromPoints(pentagon)});
+    scene.obstacles.push_back(test::wallObstacle("kerb", 15.0, -3.0, 15.3, 3.0));
+  }
+  return scene;
+}
+
 TEST(WorldPushBound, SameContactsHitsAndStateAsTestingEveryCandidate) {
-  // Random drives through random lots (walls included), near the origin and 1e7 m from it.
+  // Random drives through random lots (walls, and on odd seeds polygons, included), near the
+  // origin and 1e7 m from it.
   const int drives = testing::scaledCount(40);
-  std::int64_t skipped = 0, pushes_tested = 0;
+  std::int64_t skipped = 0, pushes_tested = 0, polygon_hits = 0;
   for (int seed = 1; seed <= drives; ++seed) {
     for (const double offset : {0.0, 1e7}) {
-      const Scene scene =
-          test::translated(test::parkingLot(static_cast<std::uint64_t>(seed)), {offset, -offset});
+      const Scene scene = test::translated(lotFor(seed), {offset, -offset});
       World bound(scene), every(scene, everyTest());
       for (const InputFrame& in : test::scriptedDrive(static_cast<std::uint64_t>(seed), 3000)) {
         bound.step(in);
@@ -66,6 +86,8 @@ TEST(WorldPushBound, SameContactsHitsAndStateAsTestingEveryCandidate) {
       EXPECT_EQ(b.narrowphase_tests + b.skipped_tests, b.broadphase_candidates) << "seed " << seed;
       EXPECT_EQ(e.skipped_tests, 0);
       EXPECT_EQ(e.narrowphase_tests, e.broadphase_candidates);
+      for (const HitEvent& h : bound.hits())
+        polygon_hits += h.collider >= scene.parked.size() ? 1 : 0;
       skipped += b.skipped_tests;
       pushes_tested += e.narrowphase_tests - b.narrowphase_tests;
     }
@@ -73,6 +95,7 @@ TEST(WorldPushBound, SameContactsHitsAndStateAsTestingEveryCandidate) {
   // The drives push out often enough that the bound saves tests.
   EXPECT_GT(skipped, 10 * drives);
   EXPECT_EQ(skipped, pushes_tested);
+  EXPECT_GT(polygon_hits, 0);
 }
 
 // The player at the origin (facing +x, 4.5 x 1.8 m) overlaps `north` by 0.2 m and is pushed
