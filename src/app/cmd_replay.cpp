@@ -73,7 +73,7 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
          std::to_string(s.skipped_queries) + " skipped: box unchanged), " +
          std::to_string(s.broadphase_candidates) + " candidates, " +
          std::to_string(s.narrowphase_tests) + " narrow-phase tests (" +
-         std::to_string(s.skipped_tests) + " more skipped after push-out), " +
+         std::to_string(s.skipped_tests) + " more skipped after a push-out), " +
          std::to_string(s.contacts) + " contacts, " + std::to_string(s.substeps) + " sub-steps, " +
          std::to_string(s.sweeps) + " sweeps\n";
   return out;
