@@ -155,9 +155,9 @@ class World {
   // detected_box_, metres (the SAT separation, or for a skipped test the bound carried over). It
   // can be longer than candidates_; the entries past it are unused.
   std::vector<double> candidate_gaps_;
-  std::vector<std::uint32_t>
-      pushed_ids_;                   // detectAfterPush scratch: the candidates before the push
-  std::vector<double> pushed_gaps_;  // and their gaps
+  // detectAfterPush's scratch: the candidates before the push, and their gaps.
+  std::vector<std::uint32_t> pushed_ids_;
+  std::vector<double> pushed_gaps_;
   double verdict_scale_ = 0.0;  // largest |coordinate| of the colliders' bounds, for the margin
   std::vector<std::uint8_t> touching_;  // per collider: in contact at the previous frame
   // Per collider: the last frame of its crash window (-1: none), the damage that crash has charged

@@ -28,7 +28,7 @@ WorldSettings everyTest() {
   return s;
 }
 
-std::string hexOf(double x) {
+std::string bitsOf(double x) {
   return std::to_string(std::bit_cast<std::uint64_t>(x));
 }
 
@@ -36,8 +36,8 @@ std::string hexOf(double x) {
 std::string describeContacts(const World& w) {
   std::string out;
   for (const ActiveContact& c : w.contacts()) {
-    out += std::to_string(c.collider) + " " + hexOf(c.normal.x()) + " " + hexOf(c.normal.y()) +
-           " " + hexOf(c.separation) + "; ";
+    out += std::to_string(c.collider) + " " + bitsOf(c.normal.x()) + " " + bitsOf(c.normal.y()) +
+           " " + bitsOf(c.separation) + "; ";
   }
   return out;
 }
