@@ -342,12 +342,18 @@ SatResult2 collide(const Shape& a, const Shape& b) {
   return r;
 }
 
+// The winning axis of a pair before normalisation: its gap with B on its positive side (forward)
+// and on its negative side (backward), and the axis (an edge vector turned clockwise).
+struct AxisGaps {
+  double forward, backward, axis_x, axis_y;
+};
+
 // Two polygons of kN vertices each, without copying either into a Shape. The pair is symmetric,
 // so one register holds both: lane 0 measures A's edge normal q against B and lane 1 B's edge
 // normal q against A, with the operations of measureAxes in its order (same answer bit for bit).
 // False, with nothing written, when the pair is outside the fast path's range.
 template <int kN>
-bool widestGapOfEqualCounts(PolygonView a, PolygonView b, sat_detail::AxisGaps& out) {
+bool widestGapOfEqualCounts(PolygonView a, PolygonView b, AxisGaps& out) {
   const Double2 ref = simd::load(a.vertex(0).data());
   // Per vertex i: own = (A's, B's) coordinate, other = (B's, A's); per edge i: its normal.
   Double2 own_x[kN], own_y[kN], other_x[kN], other_y[kN], nx[kN], ny[kN];
@@ -410,34 +416,35 @@ bool widestGapOfEqualCounts(PolygonView a, PolygonView b, sat_detail::AxisGaps& 
 }
 
 // The winning axis normalised, as winner() does it.
-SatResult2 resultOf(const sat_detail::AxisGaps& w) {
+sat_detail::WidestAxis normalised(const AxisGaps& w) {
   const double f = w.forward, g = w.backward, n_x = w.axis_x, n_y = w.axis_y;
   const double length = std::sqrt(n_x * n_x + n_y * n_y);
-  SatResult2 r;
-  r.separation = (f > g ? f : g) / length;
-  r.normal = f >= g ? Eigen::Vector2d(n_x / length, n_y / length)
-                    : Eigen::Vector2d(-n_x / length, -n_y / length);
-  r.hit = r.separation <= 0.0;
-  return r;
+  const double separation = (f > g ? f : g) / length;
+  return f >= g ? sat_detail::WidestAxis{separation, n_x / length, n_y / length}
+                : sat_detail::WidestAxis{separation, -n_x / length, -n_y / length};
 }
 
 // Two quadrilaterals on the widest path the CPU has (both give the same bits).
-bool widestGapOfQuads(PolygonView a, PolygonView b, sat_detail::AxisGaps& out) {
+bool widestAxisOfQuads(PolygonView a, PolygonView b, sat_detail::WidestAxis& out) {
 #if defined(CARDEMO_BATCH_AVX2)
   if (batchPath() != BatchPath::kPortable) {
-    return sat_detail::widestGapOfQuadsAvx2(a.vertex(0).data(), b.vertex(0).data(), out);
+    return sat_detail::widestAxisOfQuadsAvx2(a.vertex(0).data(), b.vertex(0).data(), out);
   }
 #endif
-  return widestGapOfEqualCounts<4>(a, b, out);
+  AxisGaps gaps;
+  if (!widestGapOfEqualCounts<4>(a, b, gaps)) return false;
+  out = normalised(gaps);
+  return true;
 }
 
 }  // namespace
 
 SatResult2 collidePolygons(PolygonView a, PolygonView b) {
   assert(inDomain(a) && inDomain(b));
-  sat_detail::AxisGaps gaps;
-  if (a.count == 4 && b.count == 4 && widestGapOfQuads(a, b, gaps)) {
-    const SatResult2 r = resultOf(gaps);
+  sat_detail::WidestAxis widest;
+  if (a.count == 4 && b.count == 4 && widestAxisOfQuads(a, b, widest)) {
+    const SatResult2 r{widest.separation <= 0.0, widest.separation,
+                       Eigen::Vector2d(widest.normal_x, widest.normal_y)};
     assert(isFinite(r));
     return r;
   }

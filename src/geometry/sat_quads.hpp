@@ -13,19 +13,19 @@ inline constexpr double kLargestFastCoordinate = 0x1p100;
 /// See kLargestFastCoordinate.
 inline constexpr double kSmallestFastLength2 = 0x1p-200;
 
-/// The winning axis of a pair: its gap with B on its positive side (forward) and on its negative
-/// side (backward), and the axis, unnormalised.
-struct AxisGaps {
-  double forward;   ///< Gap with B beyond A on +axis.
-  double backward;  ///< Gap with B beyond A on -axis.
-  double axis_x;    ///< The axis (an edge vector turned clockwise), x.
-  double axis_y;    ///< The axis, y.
+/// The winning axis of a pair, normalised: the separation along it and its unit normal, pointing
+/// from A towards B.
+struct WidestAxis {
+  double separation;  ///< Largest normalised gap, metres; <= 0 means the pair touches or overlaps.
+  double normal_x;    ///< Unit normal from A towards B, x.
+  double normal_y;    ///< Unit normal, y.
 };
 
 /// The first of the eight edge normals (A's, then B's) with the largest normalised gap between
-/// quadrilaterals `a` and `b` (four CCW vertices each, x0, y0, ..., x3, y3, world metres), bit for
-/// bit as the SSE2 path of sat_polygon.cpp finds it. False, with nothing written, when the pair is
-/// outside the fast path's range. Call only when geometry/batch_path says the CPU has AVX2.
-bool widestGapOfQuadsAvx2(const double* a, const double* b, AxisGaps& out);
+/// quadrilaterals `a` and `b` (four CCW vertices each, x0, y0, ..., x3, y3, world metres),
+/// normalised, bit for bit as the SSE2 path of sat_polygon.cpp finds it. False, with nothing
+/// written, when the pair is outside the fast path's range. Call only when geometry/batch_path
+/// says the CPU has AVX2.
+bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out);
 
 }  // namespace cardemo::sat_detail

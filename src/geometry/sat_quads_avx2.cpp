@@ -40,7 +40,7 @@ namespace {
 
 }  // namespace
 
-bool widestGapOfQuadsAvx2(const double* a, const double* b, AxisGaps& out) {
+bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out) {
   // World coordinates by vertex pairs: x01 = (A x0, B x0, A x1, B x1), and so on.
   const __m256d a01 = _mm256_loadu_pd(a), a23 = _mm256_loadu_pd(a + 4);
   const __m256d b01 = _mm256_loadu_pd(b), b23 = _mm256_loadu_pd(b + 4);
@@ -79,7 +79,10 @@ bool widestGapOfQuadsAvx2(const double* a, const double* b, AxisGaps& out) {
   other_x[3] = _mm256_permute4x64_pd(lx23, kSecond);
   other_y[3] = _mm256_permute4x64_pd(ly23, kSecond);
 
-  alignas(32) double forward[2][4], backward[2][4], key[2][4];
+  // Per slot, what its normalisation needs: the gap, the axis pointing towards B, and its length
+  // (a root off the critical path: only the winner's is used, but every lane's is ready by then).
+  alignas(32) double gap_of[8], toward_x[8], toward_y[8], length_of[8];
+  __m256d keys[2];
   __m256d largest_key = _mm256_set1_pd(-__builtin_inf());
   __m256d smallest_length2 = _mm256_set1_pd(__builtin_inf());
   for (int r = 0; r < 2; ++r) {
@@ -97,29 +100,38 @@ bool widestGapOfQuadsAvx2(const double* a, const double* b, AxisGaps& out) {
     // Towards B: A's forward gap is B's low end past A's high end; B's is the other way round.
     const __m256d u = _mm256_sub_pd(other_lo, hi), v = _mm256_sub_pd(lo, other_hi);
     const __m256d f = aLanesFrom(u, v), g = aLanesFrom(v, u);
-    const __m256d gap = _mm256_max_pd(f, g);
+    const __m256d gap = _mm256_max_pd(f, g);  // f > g ? f : g, as the SSE2 path
     const __m256d length2 = _mm256_add_pd(_mm256_mul_pd(x, x), _mm256_mul_pd(y, y));
-    const __m256d k = _mm256_div_pd(_mm256_mul_pd(gap, _mm256_andnot_pd(sign, gap)), length2);
-    _mm256_store_pd(forward[r], f);
-    _mm256_store_pd(backward[r], g);
-    _mm256_store_pd(key[r], k);
-    largest_key = _mm256_max_pd(largest_key, k);
+    keys[r] = _mm256_div_pd(_mm256_mul_pd(gap, _mm256_andnot_pd(sign, gap)), length2);
+    // The normal is the axis when f >= g, else its negation; negating before the division gives
+    // the same bits as after it.
+    const __m256d flip = _mm256_andnot_pd(_mm256_cmp_pd(f, g, _CMP_GE_OQ), sign);
+    _mm256_store_pd(gap_of + 4 * r, gap);
+    _mm256_store_pd(toward_x + 4 * r, _mm256_xor_pd(x, flip));
+    _mm256_store_pd(toward_y + 4 * r, _mm256_xor_pd(y, flip));
+    _mm256_store_pd(length_of + 4 * r, _mm256_sqrt_pd(length2));
+    largest_key = _mm256_max_pd(largest_key, keys[r]);
     smallest_length2 = _mm256_min_pd(smallest_length2, length2);
   }
   if (!(largestLane(largest) < kLargestFastCoordinate &&
         smallestLane(smallest_length2) > kSmallestFastLength2)) {
     return false;
   }
-  // The first slot (A's axes 0-3, then B's) with the largest key; slot (shape s, axis q) is lane
-  // 2 (q % 2) + s of round q / 2.
-  const double top = largestLane(largest_key);
-  int w = 0;
-  while (w + 1 < 8 && !(key[(w % 4) / 2][2 * (w % 2) + w / 4] == top)) ++w;
-  const int round = (w % 4) / 2, lane = 2 * (w % 2) + w / 4;
-  alignas(32) double axis_x[4], axis_y[4];
-  _mm256_store_pd(axis_x, nx[round]);
-  _mm256_store_pd(axis_y, ny[round]);
-  out = {forward[round][lane], backward[round][lane], axis_x[lane], axis_y[lane]};
+  // The first slot (A's axes 0-3, then B's) with the largest key, without a branch (a loop over
+  // the slots mispredicts on most pairs of a large set). Bit 4 r + lane of `ties` is lane `lane`
+  // of round r, so slot (shape s, axis q) is bit 4 (q / 2) + 2 (q % 2) + s: A's slots are the even
+  // bits in axis order, B's the odd ones. Slot 7 when no key equals the largest, as a loop would.
+  const __m256d top = _mm256_set1_pd(largestLane(largest_key));
+  const unsigned ties =
+      static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(keys[0], top, _CMP_EQ_OQ))) |
+      static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(keys[1], top, _CMP_EQ_OQ))) << 4;
+  const unsigned a_ties = ties & 0x55u, b_ties = (ties & 0xAAu) | 0x80u;
+  const int w = __builtin_ctz(a_ties != 0 ? a_ties : b_ties);
+  // One division for the three quotients (IEEE division lane by lane: the scalar path's bits).
+  const __m256d numerators = _mm256_setr_pd(gap_of[w], toward_x[w], toward_y[w], 0.0);
+  alignas(32) double q[4];
+  _mm256_store_pd(q, _mm256_div_pd(numerators, _mm256_broadcast_sd(length_of + w)));
+  out = {q[0], q[1], q[2]};
   return true;
 }
 
