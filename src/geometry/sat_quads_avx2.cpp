@@ -33,6 +33,12 @@ namespace {
   return _mm_cvtsd_f64(_mm_max_pd(half, _mm_unpackhi_pd(half, half)));
 }
 
+// The largest lane, in every lane.
+[[gnu::always_inline]] inline __m256d largestInEveryLane(__m256d v) {
+  const __m256d halves = _mm256_max_pd(v, _mm256_permute2f128_pd(v, v, 1));
+  return _mm256_max_pd(halves, _mm256_permute_pd(halves, 0b0101));
+}
+
 [[gnu::always_inline]] inline double smallestLane(__m256d v) {
   const __m128d half = _mm_min_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_min_pd(half, _mm_unpackhi_pd(half, half)));
@@ -83,7 +89,6 @@ bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out) {
   // (a root off the critical path: only the winner's is used, but every lane's is ready by then).
   alignas(32) double gap_of[8], toward_x[8], toward_y[8], length_of[8];
   __m256d keys[2];
-  __m256d largest_key = _mm256_set1_pd(-__builtin_inf());
   __m256d smallest_length2 = _mm256_set1_pd(__builtin_inf());
   for (int r = 0; r < 2; ++r) {
     const __m256d x = nx[r], y = ny[r];
@@ -110,7 +115,6 @@ bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out) {
     _mm256_store_pd(toward_x + 4 * r, _mm256_xor_pd(x, flip));
     _mm256_store_pd(toward_y + 4 * r, _mm256_xor_pd(y, flip));
     _mm256_store_pd(length_of + 4 * r, _mm256_sqrt_pd(length2));
-    largest_key = _mm256_max_pd(largest_key, keys[r]);
     smallest_length2 = _mm256_min_pd(smallest_length2, length2);
   }
   if (!(largestLane(largest) < kLargestFastCoordinate &&
@@ -121,7 +125,7 @@ bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out) {
   // the slots mispredicts on most pairs of a large set). Bit 4 r + lane of `ties` is lane `lane`
   // of round r, so slot (shape s, axis q) is bit 4 (q / 2) + 2 (q % 2) + s: A's slots are the even
   // bits in axis order, B's the odd ones. Slot 7 when no key equals the largest, as a loop would.
-  const __m256d top = _mm256_set1_pd(largestLane(largest_key));
+  const __m256d top = largestInEveryLane(_mm256_max_pd(keys[0], keys[1]));
   const unsigned ties =
       static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(keys[0], top, _CMP_EQ_OQ))) |
       static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(keys[1], top, _CMP_EQ_OQ))) << 4;
