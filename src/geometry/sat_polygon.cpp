@@ -424,6 +424,16 @@ sat_detail::WidestAxis normalised(const AxisGaps& w) {
                 : sat_detail::WidestAxis{separation, -n_x / length, -n_y / length};
 }
 
+// Two quadrilaterals on the SSE2 path. Not inlined, as the general path below is not: the AVX2
+// path's caller then keeps a small frame (no callee-saved registers, no room for two Shapes).
+[[gnu::noinline]] bool widestAxisOfQuadsSse2(PolygonView a, PolygonView b,
+                                             sat_detail::WidestAxis& out) {
+  AxisGaps gaps;
+  if (!widestGapOfEqualCounts<4>(a, b, gaps)) return false;
+  out = normalised(gaps);
+  return true;
+}
+
 // Two quadrilaterals on the widest path the CPU has (both give the same bits).
 bool widestAxisOfQuads(PolygonView a, PolygonView b, sat_detail::WidestAxis& out) {
 #if defined(CARDEMO_BATCH_AVX2)
@@ -431,10 +441,13 @@ bool widestAxisOfQuads(PolygonView a, PolygonView b, sat_detail::WidestAxis& out
     return sat_detail::widestAxisOfQuadsAvx2(a.vertex(0).data(), b.vertex(0).data(), out);
   }
 #endif
-  AxisGaps gaps;
-  if (!widestGapOfEqualCounts<4>(a, b, gaps)) return false;
-  out = normalised(gaps);
-  return true;
+  return widestAxisOfQuadsSse2(a, b, out);
+}
+
+// Any two polygons, through Shapes.
+[[gnu::noinline]] SatResult2 collideGeneral(PolygonView a, PolygonView b) {
+  const Eigen::Vector2d& ref = a.vertex(0);
+  return collide(polygonShape(a, ref), polygonShape(b, ref));
 }
 
 }  // namespace
@@ -448,8 +461,7 @@ SatResult2 collidePolygons(PolygonView a, PolygonView b) {
     assert(isFinite(r));
     return r;
   }
-  const Eigen::Vector2d& ref = a.vertex(0);
-  return collide(polygonShape(a, ref), polygonShape(b, ref));
+  return collideGeneral(a, b);
 }
 
 SatResult2 collidePolygonObb(PolygonView a, const Obb2& b) {
