@@ -50,7 +50,10 @@ def run_bench(build_dir, quick, repetitions, bench_filter, out_json):
     if quick:
         cmd += ["--smoke", "--benchmark_min_time=0.001"]
     else:
-        cmd += [f"--benchmark_repetitions={repetitions}", "--benchmark_min_time=0.2"]
+        # Repetitions interleaved at random across the run: a burst of load from other processes
+        # then slows one sample of many benchmarks, not every sample of a few.
+        cmd += [f"--benchmark_repetitions={repetitions}", "--benchmark_min_time=0.2",
+                "--benchmark_enable_random_interleaving=true"]
     if bench_filter:
         cmd.append(f"--benchmark_filter={bench_filter}")
     run(cmd, stdout=subprocess.DEVNULL)
@@ -62,7 +65,10 @@ class Results:
     def __init__(self, data):
         self.context = data.get("context", {})
         self.rows = {}
-        for b in data["benchmarks"]:
+        # Registration order (sizes ascending), whatever order the interleaved repetitions ran in.
+        ordered = sorted(data["benchmarks"],
+                         key=lambda b: (b.get("family_index", 0), b.get("per_family_instance_index", 0)))
+        for b in ordered:
             if b.get("error_occurred") or b.get("run_type") == "aggregate":
                 continue
             name = re.sub(r"/iterations:\d+", "", b.get("run_name", b["name"]))
