@@ -157,9 +157,24 @@ def draw_front(ax, points, label="Pareto front"):
     return front
 
 
+DEFAULT_RING_SIZE = 260
+
+
 def mark_default(ax, point, text):
-    ax.scatter([point[0]], [point[1]], s=260, facecolors="none", edgecolors="red", linewidths=2,
-               zorder=5, label=text)
+    ax.scatter([point[0]], [point[1]], s=DEFAULT_RING_SIZE, facecolors="none", edgecolors="red",
+               linewidths=2, zorder=5, label=text)
+
+
+def legend(owner, *args, **kwargs):
+    """owner.legend (an axes' or a figure's), with the default's ring drawn at a marker's size: at
+    its plot size it covers the entry above it."""
+    made = owner.legend(*args, **kwargs)
+    handles = getattr(made, "legend_handles", None) or getattr(made, "legendHandles", [])
+    for handle in handles:
+        sizes = handle.get_sizes() if hasattr(handle, "get_sizes") else []
+        if len(sizes) and sizes[0] == DEFAULT_RING_SIZE:
+            handle.set_sizes([70])
+    return made
 
 
 def floor(e):
@@ -202,14 +217,18 @@ def plot_integrators(plt, rows, out):
         cells = worst if case == panels[-1] else [r for r in rows if r["case"] == case]
         points = [(r["ns_per_sim_s"], floor(r["max_err_m"])) for r in cells]
         front = draw_front(ax, points)
-        for scheme in schemes:
+        for index, scheme in enumerate(schemes):
             label, marker, colour = SCHEME_STYLE.get(scheme, (scheme, "x", None))
+            # Schemes take turns labelling above and below their points: pairs of schemes often
+            # share a point (the two Eulers; RK4 and the arc on straight runs).
+            label_offset = (4, 3) if index % 2 == 0 else (4, -9)
             sc = sorted((r for r in cells if r["scheme"] == scheme), key=lambda r: r["hz"])
             ax.plot([r["ns_per_sim_s"] for r in sc], [floor(r["max_err_m"]) for r in sc],
                     marker=marker, color=colour, label=label, linewidth=1, markersize=5)
             for r in sc:
                 ax.annotate(f"{r['hz']}", (r["ns_per_sim_s"], floor(r["max_err_m"])),
-                            textcoords="offset points", xytext=(4, 3), fontsize=6, color=colour)
+                            textcoords="offset points", xytext=label_offset, fontsize=6,
+                            color=colour)
         d = [i for i, r in enumerate(cells) if r["is_default"] == 1]
         if d:
             r = cells[d[0]]
@@ -230,7 +249,7 @@ def plot_integrators(plt, rows, out):
     for ax in axes[len(panels):]:
         ax.axis("off")
     handles, labels = axes[0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower right", fontsize=8, bbox_to_anchor=(0.98, 0.08))
+    legend(fig, handles, labels, loc="lower right", fontsize=8, bbox_to_anchor=(0.98, 0.08))
     fig.suptitle("Car integrators: error against closed forms vs cost (numbers by points: hz)",
                  fontsize=11)
     fig.tight_layout()
@@ -293,7 +312,7 @@ def plot_precision(plt, rows, out):
         left.set_ylabel("misclassified: wrong verdict\nor |sep error| > 2e-6 m", fontsize=9)
         left.set_title(f"{cls} boxes: error against world offset", fontsize=10)
         left.grid(True, alpha=0.3)
-        left.legend(fontsize=7, loc="center right")
+        legend(left, fontsize=7, loc="center right")
 
         # Pareto: worst rate over the offsets against the median cost per pair.
         points, names = [], []
@@ -320,7 +339,7 @@ def plot_precision(plt, rows, out):
         right.set_ylabel("worst misclassified rate over the offsets", fontsize=9)
         right.set_title(f"{cls} boxes: cost against the worst error", fontsize=10)
         right.grid(True, which="both", alpha=0.3)
-        right.legend(fontsize=7, loc="center right")
+        legend(right, fontsize=7, loc="center right")
     fig.suptitle("2D OBB SAT precision: pairs within 1e-7..1 m of touching, against the GMP oracle",
                  fontsize=11)
     fig.tight_layout()
@@ -395,11 +414,11 @@ def plot_ccd(plt, rows, out, default):
             ax.axhline(zero, color="0.6", linewidth=0.8)
             ax.text(0.02, 0.02, f"on the grey line: none missed (0 of {min_cases:,})",
                     transform=ax.transAxes, fontsize=7, color="0.4")
-        ax.set_xlabel("CPU ns per simulated second (ns/step x hz, mean over speeds where the "
-                      "modes differ)")
-        ax.set_ylabel(ylabel)
+        ax.set_xlabel("CPU ns per simulated second\n(ns/step x hz, mean over speeds where the "
+                      "modes differ)", fontsize=9)
+        ax.set_ylabel(ylabel, fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
+        legend(ax, fontsize=7)
     fig.suptitle("Continuous collision: misses and time-of-impact error vs cost (points: hz)",
                  fontsize=11)
     fig.tight_layout()
