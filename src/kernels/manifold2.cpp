@@ -68,20 +68,42 @@ double margin(const ManifoldSettings& s, double separation) {
   return (1.0 - s.relative_tolerance) * std::abs(separation) + s.absolute_tolerance;
 }
 
+// A face (index) and its separation or dot product (value).
+struct Indexed {
+  int index;
+  double value;
+};
+
+// The first of two with the largest value: `later` only where strictly larger.
+Indexed firstLargest(Indexed earlier, Indexed later) {
+  return later.value > earlier.value ? later : earlier;
+}
+
+// The first of two with the smallest value: `later` only where strictly smaller.
+Indexed firstSmallest(Indexed earlier, Indexed later) {
+  return later.value < earlier.value ? later : earlier;
+}
+
+// The first of faces k .. k + 3 with the largest separation, as pairs and then the pairs' winners,
+// each carrying its value: what a scan in face order finds, without a chain of loads through the
+// index.
+Indexed firstLargestOfFour(const double seps[8], int k) {
+  return firstLargest(firstLargest({k, seps[k]}, {k + 1, seps[k + 1]}),
+                      firstLargest({k + 2, seps[k + 2]}, {k + 3, seps[k + 3]}));
+}
+
 // The reference face: A's best face unless B's is clearly better, or the previous face while it
 // stays within the margin of the best, so that nearly equal faces do not flip-flop.
 int chooseReference(const double seps[8], const ManifoldSettings& settings, int previous) {
-  int best_a = 0, best_b = 4;
-  for (int k = 1; k < 4; ++k) {
-    if (seps[k] > seps[best_a]) best_a = k;
-    if (seps[k + 4] > seps[best_b]) best_b = k + 4;
-  }
-  const double best = seps[best_b] > seps[best_a] ? seps[best_b] : seps[best_a];
+  const Indexed best_a = firstLargestOfFour(seps, 0), best_b = firstLargestOfFour(seps, 4);
+  const double best = best_b.value > best_a.value ? best_b.value : best_a.value;
   if (previous >= 0 && previous < 8 && seps[previous] >= best - margin(settings, best)) {
     return previous;
   }
-  if (seps[best_b] > seps[best_a] + margin(settings, seps[best_a])) return best_b;
-  return best_a;
+  if (best_b.value > best_a.value + margin(settings, best_a.value)) {
+    return best_b.index;
+  }
+  return best_a.index;
 }
 
 struct ClipVertex {
@@ -112,8 +134,12 @@ Manifold2 manifoldObb2(const Obb2& a, const Obb2& b, const ManifoldSettings& set
   const PairPose pose = pairPose(a, b);
   double seps[8];
   faceSeparations(a, b, pose, seps);
-  double sat = seps[0];
-  for (int k = 1; k < 8; ++k) sat = seps[k] > sat ? seps[k] : sat;
+  // The largest separation as a tree of maxima, three deep instead of a chain of seven: the early
+  // out waits on it. Separations are finite (the domain), so only a zero's sign can differ from a
+  // scan's, and the comparison below does not see it.
+  const auto larger = [](double x, double y) { return x > y ? x : y; };
+  const double sat = larger(larger(larger(seps[0], seps[1]), larger(seps[2], seps[3])),
+                            larger(larger(seps[4], seps[5]), larger(seps[6], seps[7])));
   Manifold2 m;
   if (sat > settings.max_separation) return m;
 
@@ -131,9 +157,11 @@ Manifold2 manifoldObb2(const Obb2& a, const Obb2& b, const ManifoldSettings& set
 
   // Incident face: the incident box's face whose normal (u, v, -u, -v) is most anti-parallel to
   // the reference normal; its dot product with that normal is sign times one coordinate.
-  const double dots[4] = {sign * u[axis], sign * v[axis], -(sign * u[axis]), -(sign * v[axis])};
-  int j = 0;
-  for (int i = 1; i < 4; ++i) j = dots[i] < dots[j] ? i : j;
+  // The first smallest of the four, as pairs and then the pairs' winners (chooseReference's
+  // reason).
+  const double du = sign * u[axis], dv = sign * v[axis];
+  const int j =
+      firstSmallest(firstSmallest({0, du}, {1, dv}), firstSmallest({2, -du}, {3, -dv})).index;
   // Its two corners in Obb2::corners() order (face j joins corners j and j+1): corner i is
   // t + sx ex + sy ey with (sx, sy) = (+,-), (+,+), (-,+), (-,-).
   const double ex[2] = {u[0] * ibox.half.x(), u[1] * ibox.half.x()};

@@ -178,5 +178,23 @@ TEST(Manifold2Random, PointsAgreeWithExactSat) {
   EXPECT_GT(with_points, n / 10);
 }
 
+TEST(Manifold2, IncidentFaceTieTakesTheFirstFace) {
+  // B turned exactly 45 degrees against A (both axis components the same double), a corner 1 cm
+  // into A's top face: B's faces 2 and 3 are equally anti-parallel to the reference normal. The
+  // first of them (face 2, corners 2 and 3) is the incident edge, as a scan in face order takes
+  // it; face 3 would give corners 3 and 0. Both corners stay within the wide max_separation.
+  const Obb2 ground = box(0, 0, 0, 4, 2);
+  const double r = std::sqrt(0.5);
+  const Obb2 tilted{{0.0, 1.0 + r - 0.01}, {r, r}, {0.5, 0.5}};
+  ManifoldSettings wide;
+  wide.max_separation = 1.0;
+  const Manifold2 m = manifoldObb2(ground, tilted, wide);
+  ASSERT_EQ(m.reference_face, 1);
+  ASSERT_EQ(m.count, 2);
+  EXPECT_EQ(m.points[0].feature, 8 * 1 + 2);
+  EXPECT_EQ(m.points[1].feature, 8 * 1 + 3);  // B's lowest corner, (-, -)
+  EXPECT_NEAR(m.points[1].separation, -0.01, 1e-12);
+}
+
 }  // namespace
 }  // namespace cardemo
