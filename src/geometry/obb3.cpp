@@ -197,7 +197,8 @@ template <int N, class F>
 // product, which edgeGap below computes to a few ulps, its error is within `bound` (frameDefect
 // widens it); a gap beyond the bound has the accurate gap's sign, the others are recomputed
 // accurately, so every verdict is the accurate one. A normalised gap is within 2^-40 of the pair's
-// scale of the accurate one when the squared axis length clears `min_length2`.
+// scale of the accurate one when the squared axis length clears `min_length2`. The AVX2 kernel
+// (obb3_avx2.cpp, edgeBound) repeats edgeFilter operation for operation: change both together.
 struct EdgeFilter {
   double bound;        // on |gap times axis length|, metres
   double min_length2;  // floor on the squared axis length for a normalised fast gap
@@ -231,9 +232,7 @@ struct EdgeFilter {
 // 2^-52 (relative) of its exact value. A face's product that is not a normal number (|gap| below
 // about 2^-504) is below 2^-1022, far from the edge product it is compared with. The boxes' domain
 // (kMaxCoordinate, half extents down to zero) reaches beyond that range: such a pair takes the
-// edge-by-edge loop.
-constexpr double kRootFreeMinScale = 0x1p-400;
-constexpr double kRootFreeMaxScale = 0x1p400;
+// edge-by-edge loop (obb3_detail::kRootFreeMinScale and kRootFreeMaxScale).
 
 // A step of the comparison is certain when its two products differ by more than 2^-48 of the
 // first (a sign apart included): the exact separations then differ by more than 12 u (u = 2^-53),
@@ -243,13 +242,6 @@ constexpr double kRootFreeMaxScale = 0x1p400;
 // transitive), bit for bit; otherwise the kernel normalises and scans too. So its result is always
 // that of the SSE2 path below (largestNormalised), near ties included: the root-free pick pays
 // for itself only where a blend instruction selects (SSE2 has none).
-
-// The bound the common case needs every edge gap to clear: the filter's, or infinity (no edge
-// clears it) for a pair whose scale is outside the root-free comparison's range.
-[[gnu::always_inline]] inline double rootFreeBound(const EdgeFilter& filter) {
-  const bool in_range = filter.scale >= kRootFreeMinScale && filter.scale <= kRootFreeMaxScale;
-  return in_range ? filter.bound : std::numeric_limits<double>::infinity();
-}
 
 // Edge axes a_i x b_j in A's frame, gap times axis length and squared length: lane i of gap[j] and
 // of length2[j] is edge axis (i, j), e = 3i + j.
@@ -394,8 +386,13 @@ Eigen::Vector3d winningNormal(const Obb3& a, const Obb3& b, const Pose& p, int a
 }
 
 #if defined(CARDEMO_BATCH_AVX2)
-obb3_detail::BoxNumbers numbersOf(const Obb3& box) {
-  return {box.center.data(), box.half.data(), box.rotation().data()};
+// The box's obb3_detail::BoxNumbers: its members are three runs of doubles, in that order, with no
+// padding between them.
+const double* numbersOf(const Obb3& box) {
+  const double* numbers = box.center.data();
+  assert(box.half.data() == numbers + obb3_detail::BoxNumbers::kHalf &&
+         box.rotation().data() == numbers + obb3_detail::BoxNumbers::kRotation);
+  return numbers;
 }
 #endif
 
@@ -484,16 +481,38 @@ namespace {
   return r;
 }
 
+// overlapObb3 on the SSE2 path, also where some edge gap lies within the bound. Not inlined, so
+// that the AVX2 path's caller keeps a small frame.
+[[gnu::noinline]] bool overlapSse2(const Obb3& a, const Obb3& b) {
+  const Pose3 p = relativePose(a, b);
+  const double face = std::max(
+      {p.face_a.lo[0], p.face_a.lo[1], p.face_a.hi[0], p.face_b[0], p.face_b[1], p.face_b[2]});
+  if (face > 0.0) return false;
+  const FastEdges fast = fastEdges(a, b, p);
+  const V2 lo = max2(max2(fast.gap[0].lo, fast.gap[1].lo), fast.gap[2].lo);
+  const V2 hi = max2(max2(fast.gap[0].hi, fast.gap[1].hi), fast.gap[2].hi);
+  const double largest = std::max({lo[0], lo[1], hi[0]});
+  const EdgeFilter filter = edgeFilter(a, b, p.d);
+  if (largest > filter.bound) return false;
+  if (largest < -filter.bound) return true;
+  for (int e = 0; e < 9; ++e) {
+    if (fast.gapOf(e) < -filter.bound) continue;
+    double g = 0.0;
+    Eigen::Vector3d axis;
+    if (edgeGap(a, b, p.d, e / 3, e % 3, g, axis) && g > 0.0) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
 #if defined(CARDEMO_BATCH_AVX2)
   if (batchPath() != BatchPath::kPortable) {
-    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
     obb3_detail::LargestGap largest;
-    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b), rootFreeBound(filter),
-                                    filter.min_length2, largest)) {
+    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b),
+                                    std::max(a.frameDefect(), b.frameDefect()), largest)) {
       SatResult3 r;
       r.separation = largest.gap;
       r.axis_index = largest.axis;
@@ -513,33 +532,16 @@ bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
 #if defined(CARDEMO_BATCH_AVX2)
   if (batchPath() != BatchPath::kPortable) {
-    obb3_detail::OverlapGaps gaps;
-    obb3_detail::overlapGapsAvx2(numbersOf(a), numbersOf(b), gaps);
-    if (gaps.face > 0.0) return false;
-    const EdgeFilter filter = edgeFilter(a, b, Eigen::Vector3d(b.center - a.center));
-    if (gaps.edge > filter.bound) return false;
-    if (gaps.edge < -filter.bound) return true;
-    // Some edge gap lies within the bound: the SSE2 path below decides it axis by axis.
+    // The kernel computes edgeFilter's bound itself, from the same numbers.
+    const obb3_detail::Verdict verdict = obb3_detail::overlapAvx2(
+        numbersOf(a), numbersOf(b), std::max(a.frameDefect(), b.frameDefect()));
+    if (verdict != obb3_detail::Verdict::kUndecided) {
+      return verdict == obb3_detail::Verdict::kOverlapping;
+    }
+    // Some edge gap lies within the bound: the SSE2 path decides it axis by axis.
   }
 #endif
-  const Pose3 p = relativePose(a, b);
-  const double face = std::max(
-      {p.face_a.lo[0], p.face_a.lo[1], p.face_a.hi[0], p.face_b[0], p.face_b[1], p.face_b[2]});
-  if (face > 0.0) return false;
-  const FastEdges fast = fastEdges(a, b, p);
-  const V2 lo = max2(max2(fast.gap[0].lo, fast.gap[1].lo), fast.gap[2].lo);
-  const V2 hi = max2(max2(fast.gap[0].hi, fast.gap[1].hi), fast.gap[2].hi);
-  const double largest = std::max({lo[0], lo[1], hi[0]});
-  const EdgeFilter filter = edgeFilter(a, b, p.d);
-  if (largest > filter.bound) return false;
-  if (largest < -filter.bound) return true;
-  for (int e = 0; e < 9; ++e) {
-    if (fast.gapOf(e) < -filter.bound) continue;
-    double g = 0.0;
-    Eigen::Vector3d axis;
-    if (edgeGap(a, b, p.d, e / 3, e % 3, g, axis) && g > 0.0) return false;
-  }
-  return true;
+  return overlapSse2(a, b);
 }
 
 // Plain scalar code: Eigen's 3-vector expressions cost several times as much here, and this runs

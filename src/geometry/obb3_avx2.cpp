@@ -78,15 +78,17 @@ struct Lanes {
 // Every splat is a load of its own (a broadcast from memory), and each 3-vector of lanes is a blend
 // of splats or comes from 128-bit loads: no gathers, few shuffles. Written in the order the values
 // die, so that they fit in the sixteen registers.
-[[gnu::always_inline]] inline Lanes poseAndFaces(const BoxNumbers& a, const BoxNumbers& b) {
+[[gnu::always_inline]] inline Lanes poseAndFaces(const double* a, const double* b) {
   Lanes p;
-  const double* rb = b.rotation;
+  const double *ca = a + BoxNumbers::kCenter, *cb = b + BoxNumbers::kCenter;
+  const double *ha = a + BoxNumbers::kHalf, *hb = b + BoxNumbers::kHalf;
+  const double* rb = b + BoxNumbers::kRotation;
   __m256d ax, ay, az;
-  rowsOf(a.rotation, ax, ay, az);
+  rowsOf(a + BoxNumbers::kRotation, ax, ay, az);
   // d = cB - cA, each component subtracted once per lane: the same bits as the scalar difference.
-  const __m256d vdx = _mm256_sub_pd(broadcast(b.center), broadcast(a.center));
-  const __m256d vdy = _mm256_sub_pd(broadcast(b.center + 1), broadcast(a.center + 1));
-  const __m256d vdz = _mm256_sub_pd(broadcast(b.center + 2), broadcast(a.center + 2));
+  const __m256d vdx = _mm256_sub_pd(broadcast(cb), broadcast(ca));
+  const __m256d vdy = _mm256_sub_pd(broadcast(cb + 1), broadcast(ca + 1));
+  const __m256d vdz = _mm256_sub_pd(broadcast(cb + 2), broadcast(ca + 2));
   p.t = dotColumns(ax, ay, az, vdx, vdy, vdz);
   // B's rows (lane j of bx is b_j's x) as blends of the splats of its entries.
   __m256d bx, by, bz;
@@ -101,12 +103,12 @@ struct Lanes {
     bz = j == 0 ? sz : _mm256_blend_pd(bz, sz, lanes);
   }
   p.tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
-  const __m256d hb0 = broadcast(b.half), hb1 = broadcast(b.half + 1), hb2 = broadcast(b.half + 2);
+  const __m256d hb0 = broadcast(hb), hb1 = broadcast(hb + 1), hb2 = broadcast(hb + 2);
   const __m256d radius_b =
       _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(p.abscol[0], hb0), _mm256_mul_pd(p.abscol[1], hb1)),
                     _mm256_mul_pd(p.abscol[2], hb2));
   p.face_b = _mm256_sub_pd(abs4(p.tb), merge(hb0, hb1, hb2));
-  const __m256d ha0 = broadcast(a.half), ha1 = broadcast(a.half + 1), ha2 = broadcast(a.half + 2);
+  const __m256d ha0 = broadcast(ha), ha1 = broadcast(ha + 1), ha2 = broadcast(ha + 2);
   p.face_a = _mm256_sub_pd(_mm256_sub_pd(abs4(p.t), merge(ha0, ha1, ha2)), radius_b);
   // B's face j: A's radius sum_k |r_kj| ha_k over lanes k of abscol[j], here lane j of a sum over
   // the rows of |R|, which are the columns transposed (no arithmetic, so the same values).
@@ -125,26 +127,27 @@ struct Lanes {
 }
 
 // obb3.cpp's fastEdges, column j of R per register.
-[[gnu::always_inline]] inline void fastEdges(const BoxNumbers& a, const BoxNumbers& b, Lanes& p) {
+[[gnu::always_inline]] inline void fastEdges(const double* a, const double* b, Lanes& p) {
   const __m256d t1 = next1(p.t), t2 = next2(p.t);
-  const __m256d sha[3] = {broadcast(a.half), broadcast(a.half + 1), broadcast(a.half + 2)};
+  const double *ha = a + BoxNumbers::kHalf, *hb = b + BoxNumbers::kHalf;
+  const __m256d sha[3] = {broadcast(ha), broadcast(ha + 1), broadcast(ha + 2)};
   const __m256d ha1 = merge(sha[1], sha[2], sha[0]), ha2 = merge(sha[2], sha[0], sha[1]);
-  const __m256d hb[3] = {broadcast(b.half), broadcast(b.half + 1), broadcast(b.half + 2)};
+  const __m256d shb[3] = {broadcast(hb), broadcast(hb + 1), broadcast(hb + 2)};
   for (int j = 0; j < 3; ++j) {
     const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     const __m256d r1 = next1(p.col[j]), r2 = next2(p.col[j]);
     const __m256d along = _mm256_sub_pd(_mm256_mul_pd(t2, r1), _mm256_mul_pd(t1, r2));
     const __m256d ra = _mm256_add_pd(_mm256_mul_pd(ha1, abs4(r2)), _mm256_mul_pd(ha2, abs4(r1)));
     const __m256d rb =
-        _mm256_add_pd(_mm256_mul_pd(p.abscol[j2], hb[j1]), _mm256_mul_pd(p.abscol[j1], hb[j2]));
+        _mm256_add_pd(_mm256_mul_pd(p.abscol[j2], shb[j1]), _mm256_mul_pd(p.abscol[j1], shb[j2]));
     p.gap[j] = _mm256_sub_pd(_mm256_sub_pd(abs4(along), ra), rb);
     p.length2[j] = _mm256_add_pd(_mm256_mul_pd(r1, r1), _mm256_mul_pd(r2, r2));
   }
 }
 
-// Root-free edge candidates, one per lane (obb3.cpp, rootFreeBound, gives the comparison, its
-// range and its certificate): gap times axis length, squared axis length, gap |gap|, and the axis
-// index (SatResult3::axis_index) as a double.
+// Root-free edge candidates, one per lane (obb3.cpp, above kRootFreeMinScale's mention, gives the
+// comparison, its range and its certificate): gap times axis length, squared axis length, gap
+// |gap|, and the axis index (SatResult3::axis_index) as a double.
 struct Candidates {
   __m256d gap, length2, square, axis;
 };
@@ -230,19 +233,42 @@ struct Candidates {
   }
 }
 
-}  // namespace
-
-void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out) {
-  Lanes p = poseAndFaces(a, b);
-  out.face = largestLane(_mm256_max_pd(withoutPadding(p.face_a), withoutPadding(p.face_b)));
-  if (out.face > 0.0) return;
-  fastEdges(a, b, p);
-  out.edge =
-      largestLane(withoutPadding(_mm256_max_pd(_mm256_max_pd(p.gap[0], p.gap[1]), p.gap[2])));
+// obb3.cpp's edgeFilter: the same operations in the same order (Eigen's sum of three is
+// (x + y) + z), so the same bits.
+[[gnu::always_inline]] inline EdgeBound edgeBound(const double* a, const double* b, double phi) {
+  constexpr double kU = 0x1p-53;
+  if (!(phi <= 0x1p-30)) return {__builtin_inf(), __builtin_inf(), __builtin_inf()};
+  const double *ca = a + BoxNumbers::kCenter, *cb = b + BoxNumbers::kCenter;
+  const double *ha = a + BoxNumbers::kHalf, *hb = b + BoxNumbers::kHalf;
+  const double scale = __builtin_fabs(cb[0] - ca[0]) + __builtin_fabs(cb[1] - ca[1]) +
+                       __builtin_fabs(cb[2] - ca[2]) + (ha[0] + ha[1] + ha[2]) +
+                       (hb[0] + hb[1] + hb[2]);
+  const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
+  return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
 }
 
-bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
-                    LargestGap& out) {
+}  // namespace
+
+Verdict overlapAvx2(const double* a, const double* b, double phi) {
+  Lanes p = poseAndFaces(a, b);
+  const double face =
+      largestLane(_mm256_max_pd(withoutPadding(p.face_a), withoutPadding(p.face_b)));
+  if (face > 0.0) return Verdict::kSeparated;
+  fastEdges(a, b, p);
+  const double edge =
+      largestLane(withoutPadding(_mm256_max_pd(_mm256_max_pd(p.gap[0], p.gap[1]), p.gap[2])));
+  const double bound = edgeBound(a, b, phi).bound;
+  if (edge > bound) return Verdict::kSeparated;
+  if (edge < -bound) return Verdict::kOverlapping;
+  return Verdict::kUndecided;
+}
+
+bool largestGapAvx2(const double* a, const double* b, double phi, LargestGap& out) {
+  const EdgeBound filter = edgeBound(a, b, phi);
+  // Outside the root-free comparison's range, no edge clears an infinite bound.
+  const bool in_range = filter.scale >= kRootFreeMinScale && filter.scale <= kRootFreeMaxScale;
+  const double bound = in_range ? filter.bound : __builtin_inf();
+  const double min_length2 = filter.min_length2;
   Lanes p = poseAndFaces(a, b);
   _mm256_storeu_pd(out.t, p.t);
   _mm256_storeu_pd(out.tb, p.tb);

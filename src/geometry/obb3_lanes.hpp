@@ -9,27 +9,40 @@
 
 namespace cardemo::obb3_detail {
 
-/// A box as plain numbers: its centre (3), half extents (3) and rotation (9, column-major).
+/// A box as plain numbers, Obb3's first fifteen doubles: its centre (0-2, metres), half extents
+/// (3-5, metres, along the box's axes) and rotation (6-14, column-major: columns are the box's
+/// axes, world frame).
 struct BoxNumbers {
-  const double* center;    ///< x, y, z, metres.
-  const double* half;      ///< Half extents along the box's axes, metres.
-  const double* rotation;  ///< Columns are the box's axes, world frame.
+  static constexpr int kCenter = 0;    ///< Offset of the centre.
+  static constexpr int kHalf = 3;      ///< Offset of the half extents.
+  static constexpr int kRotation = 6;  ///< Offset of the rotation.
 };
 
-/// What decides overlapObb3 in the common case: the largest of the six face gaps and, when that is
-/// not positive, the largest of the nine A-frame edge gaps (unnormalised), both metres.
-struct OverlapGaps {
-  double face;  ///< Largest face gap.
-  double edge;  ///< Largest edge gap times its axis length; unset when face > 0.
+/// overlapAvx2's verdict.
+enum class Verdict { kSeparated, kOverlapping, kUndecided };
+
+/// The A-frame filter of obb3.cpp (edgeFilter), from the same numbers in the same order.
+struct EdgeBound {
+  double bound;        ///< On |gap times axis length|, metres.
+  double min_length2;  ///< Floor on the squared axis length for a normalised fast gap.
+  double scale;        ///< The pair's scale, metres (infinite with the bound).
 };
 
-/// overlapObb3's face and fast edge gaps. Call only when geometry/batch_path says the CPU has AVX2.
-void overlapGapsAvx2(const BoxNumbers& a, const BoxNumbers& b, OverlapGaps& out);
+/// overlapObb3's common case: separated on a face axis, or decided by every fast edge gap clearing
+/// the filter for the larger frame defect `phi` (obb3.cpp's edgeFilter); undecided otherwise. `a`
+/// and `b` hold BoxNumbers. Call only when geometry/batch_path says the CPU has AVX2.
+Verdict overlapAvx2(const double* a, const double* b, double phi);
 
 /// collideObb3's root-free comparison of two candidate separations (the AVX2 kernel's) is certain
 /// when its two products differ by more than this fraction of the first (obb3.cpp gives the
 /// argument); otherwise the kernel normalises the gaps and picks as a scan in axis order does.
 inline constexpr double kCertain = 0x1p-48;
+
+/// The pair's scale (EdgeBound::scale) within which collideObb3's root-free comparison holds
+/// (obb3.cpp gives the range): a pair outside takes the edge-by-edge loop.
+inline constexpr double kRootFreeMinScale = 0x1p-400;
+/// Upper end of that range.
+inline constexpr double kRootFreeMaxScale = 0x1p400;
 
 /// collideObb3's common case: the largest of the fifteen gaps (faces 0-5, edges 6 + 3i + j) with
 /// every edge gap in A's frame, normalised: the first largest in axis order, bit for bit what
@@ -43,10 +56,10 @@ struct LargestGap {
   double col[3][4];  ///< col[j][k] = r_kj = a_k . b_j.
 };
 
-/// collideObb3's largest gap, when every edge gap clears the filter: |gap| > bound and squared axis
-/// length > min_length2 (obb3.cpp, rootFreeBound and EdgeFilter). False otherwise, with only the
-/// pose written. Call only when geometry/batch_path says the CPU has AVX2.
-bool largestGapAvx2(const BoxNumbers& a, const BoxNumbers& b, double bound, double min_length2,
-                    LargestGap& out);
+/// collideObb3's largest gap, when every edge gap clears the filter for the larger frame defect
+/// `phi`: |gap| > bound and squared axis length > min_length2 (obb3.cpp's edgeFilter; no bound
+/// outside kRootFreeMinScale..kRootFreeMaxScale). False otherwise, with only the pose written. `a`
+/// and `b` hold BoxNumbers. Call only when geometry/batch_path says the CPU has AVX2.
+bool largestGapAvx2(const double* a, const double* b, double phi, LargestGap& out);
 
 }  // namespace cardemo::obb3_detail
