@@ -1,8 +1,10 @@
 #include "geometry/obb3.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -276,16 +278,30 @@ struct FastEdges {
   return out;
 }
 
+// -v if `negate`, else v, without a branch (the sign bits flipped; -v has the same bits): a pair's
+// random heading makes the sign unpredictable.
+[[gnu::always_inline]] inline Eigen::Vector3d negatedIf(bool negate, const Eigen::Vector3d& v) {
+  const std::uint64_t flip = static_cast<std::uint64_t>(negate) << 63;
+  Eigen::Vector3d out;
+  for (int k = 0; k < 3; ++k) {
+    out[k] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v[k]) ^ flip);
+  }
+  return out;
+}
+
 // The world-frame unit axis of fast edge axis 6 + 3i + j, pointing from A towards B. Pose: a Pose3
 // or StoredPose.
 template <class Pose>
 Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int axis) {
-  // Unsigned, and the next indices by comparison: no signed division by 3 to correct.
-  const unsigned e = static_cast<unsigned>(axis - 6), i = e / 3, j = e % 3;
-  const unsigned i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
+  // The indices from tables and the sign by negatedIf: no branch on the axis or on the sign, which
+  // a pair's random heading makes unpredictable.
+  static constexpr unsigned char kJ[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
+  static constexpr unsigned char kI1[9] = {1, 1, 1, 2, 2, 2, 0, 0, 0};
+  static constexpr unsigned char kI2[9] = {2, 2, 2, 0, 0, 0, 1, 1, 1};
+  const unsigned e = static_cast<unsigned>(axis - 6), j = kJ[e], i1 = kI1[e], i2 = kI2[e];
   const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
   const double along = p.tk(i2) * p.r(i1, j) - p.tk(i1) * p.r(i2, j);
-  return along < 0.0 ? Eigen::Vector3d(-n.normalized()) : n.normalized();
+  return negatedIf(along < 0.0, n.normalized());
 }
 
 // Edge-edge axis a_i x b_j.
