@@ -33,6 +33,11 @@ ENGINES = [  # bench engine, compare-sweep verdict, label, style
 OFFSETS = ["0", "1000", "100000", "1e+07"]
 
 
+def offset_label(offset):
+    """'0', '1e3', '1e5', '1e7' for the offsets' strings."""
+    return "0" if offset == "0" else f"{float(offset):.0e}".replace("+0", "")
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build", nargs="?", default=os.path.join(ROOT, "build"), help="build folder")
@@ -86,9 +91,15 @@ def main(argv):
         ys = [cost[(engine, o)] for o in OFFSETS]
         print(f"| {label} | " + " | ".join(f"{y:.1f} ns, {x:.2f} %" for x, y in zip(xs, ys)) + " |")
         ax.plot(xs, ys, style, label=label)
+        # Offsets with the same error share one label (cardemo's are all at 0 %: four labels
+        # there would print over each other), placed at the group's highest point.
+        groups = {}
         for x, y, o in zip(xs, ys, OFFSETS):
-            ax.annotate("0 m" if o == "0" else f"{float(o):.0e} m".replace("+0", ""), (x, y),
-                        textcoords="offset points", xytext=(4, 4), fontsize=7)
+            groups.setdefault(x, []).append((y, offset_label(o)))
+        for x, points in groups.items():
+            text = ", ".join(label for _, label in points) + " m"
+            ax.annotate(text, (x, max(y for y, _ in points)), textcoords="offset points",
+                        xytext=(4, 4), fontsize=7)
     ax.set_xscale("symlog", linthresh=0.1)
     ax.set_xlim(left=-0.02)
     ax.set_ylim(bottom=0)
