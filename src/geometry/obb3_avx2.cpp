@@ -97,10 +97,16 @@ struct Lanes {
                   sz = broadcast(rb + 3 * j + 2);
     p.col[j] = dotColumns(ax, ay, az, sx, sy, sz);
     p.abscol[j] = abs4(p.col[j]);
-    const int lanes = j == 0 ? 0b0001 : j == 1 ? 0b1010 : 0b0100;
-    bx = j == 0 ? sx : _mm256_blend_pd(bx, sx, lanes);
-    by = j == 0 ? sy : _mm256_blend_pd(by, sy, lanes);
-    bz = j == 0 ? sz : _mm256_blend_pd(bz, sz, lanes);
+    // Literal immediates: an unoptimised build does not fold a computed one.
+    if (j == 0) {
+      bx = sx, by = sy, bz = sz;
+    } else if (j == 1) {
+      bx = _mm256_blend_pd(bx, sx, 0b1010), by = _mm256_blend_pd(by, sy, 0b1010);
+      bz = _mm256_blend_pd(bz, sz, 0b1010);
+    } else {
+      bx = _mm256_blend_pd(bx, sx, 0b0100), by = _mm256_blend_pd(by, sy, 0b0100);
+      bz = _mm256_blend_pd(bz, sz, 0b0100);
+    }
   }
   p.tb = dotColumns(bx, by, bz, vdx, vdy, vdz);  // lane j: b_j . d
   const __m256d hb0 = broadcast(hb), hb1 = broadcast(hb + 1), hb2 = broadcast(hb + 2);
