@@ -151,8 +151,8 @@ struct Lanes {
   }
 }
 
-// Root-free edge candidates, one per lane (obb3.cpp, above kRootFreeMinScale's mention, gives the
-// comparison, its range and its certificate): gap times axis length, squared axis length, gap
+// Root-free edge candidates, one per lane (obb3.cpp's comments on the root-free comparison give
+// the comparison, its range and its certificate): gap times axis length, squared axis length, gap
 // |gap|, and the axis index (SatResult3::axis_index) as a double.
 struct Candidates {
   __m256d gap, length2, square, axis;
