@@ -192,32 +192,27 @@ template <int N, class F>
   return p;
 }
 
-// The A-frame filter (the batch kernels' one, batch_kernels.hpp; docs/architecture.md, "Batch
-// kernels"). The edge axis a_i x b_j in A's frame is e_i x (A^T b_j): its gap needs only entries of
-// R = A^T B and t, a dozen operations instead of the accurate form's fifty (with six fma calls,
-// library calls on a build without -mfma). Against the gap on the stored columns' exact cross
-// product, which edgeGap below computes to a few ulps, its error is within `bound` (frameDefect
-// widens it); a gap beyond the bound has the accurate gap's sign, the others are recomputed
-// accurately, so every verdict is the accurate one. A normalised gap is within 2^-40 of the pair's
-// scale of the accurate one when the squared axis length clears `min_length2`. The AVX2 kernel
-// (obb3_avx2.cpp, edgeBound) repeats edgeFilter operation for operation: change both together.
-struct EdgeFilter {
-  double bound;        // on |gap times axis length|, metres
-  double min_length2;  // floor on the squared axis length for a normalised fast gap
-  double scale;        // the pair's scale, metres (infinite with the bound)
-};
+// The box's obb3_detail::BoxNumbers: its members are three runs of doubles, in that order, with no
+// padding between them.
+const double* numbersOf(const Obb3& box) {
+  const double* numbers = box.center.data();
+  assert(box.half.data() == numbers + obb3_detail::BoxNumbers::kHalf &&
+         box.rotation().data() == numbers + obb3_detail::BoxNumbers::kRotation);
+  return numbers;
+}
 
-[[gnu::always_inline]] inline EdgeFilter edgeFilter(const Obb3& a, const Obb3& b,
-                                                    const Eigen::Vector3d& d) {
-  constexpr double kU = 0x1p-53;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  const double phi = std::max(a.frameDefect(), b.frameDefect());
-  if (!(phi <= 0x1p-30)) return {kInf, kInf, kInf};
-  // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
-  const double scale =
-      std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) + a.half.sum() + b.half.sum();
-  const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
-  return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
+// The A-frame filter (the batch kernels' one, batch_kernels.hpp; docs/architecture.md, "Batch
+// kernels"; obb3_detail::edgeBound computes it, for this file and the AVX2 kernel alike). The edge
+// axis a_i x b_j in A's frame is e_i x (A^T b_j): its gap needs only entries of R = A^T B and t, a
+// dozen operations instead of the accurate form's fifty (with six fma calls, library calls on a
+// build without -mfma). Against the gap on the stored columns' exact cross product, which edgeGap
+// below computes to a few ulps, its error is within `bound` (frameDefect widens it); a gap beyond
+// the bound has the accurate gap's sign, the others are recomputed accurately, so every verdict is
+// the accurate one. A normalised gap is within 2^-40 of the pair's scale of the accurate one when
+// the squared axis length clears `min_length2`.
+[[gnu::always_inline]] inline obb3_detail::EdgeBound edgeFilter(const Obb3& a, const Obb3& b) {
+  return obb3_detail::edgeBound(numbersOf(a), numbersOf(b),
+                                std::max(a.frameDefect(), b.frameDefect()));
 }
 
 // collideObb3's AVX2 kernel (obb3_avx2.cpp, largestGapAvx2) compares candidate separations
@@ -401,17 +396,6 @@ Eigen::Vector3d winningNormal(const Obb3& a, const Obb3& b, const Pose& p, int a
   return p.tbk(axis - 3) < 0.0 ? Eigen::Vector3d(-n) : n;
 }
 
-#if defined(CARDEMO_BATCH_AVX2)
-// The box's obb3_detail::BoxNumbers: its members are three runs of doubles, in that order, with no
-// padding between them.
-const double* numbersOf(const Obb3& box) {
-  const double* numbers = box.center.data();
-  assert(box.half.data() == numbers + obb3_detail::BoxNumbers::kHalf &&
-         box.rotation().data() == numbers + obb3_detail::BoxNumbers::kRotation);
-  return numbers;
-}
-#endif
-
 }  // namespace
 
 namespace {
@@ -430,7 +414,7 @@ namespace {
     pickLargest(p.face_b[j], 3 + j, best, best_index);
   });
   const FastEdges fast = fastEdges(a, b, p);
-  const EdgeFilter filter = edgeFilter(a, b, p.d);
+  const obb3_detail::EdgeBound filter = edgeFilter(a, b);
   // The usual case: every edge gap clears the filter's bound on a long enough axis, so all nine
   // candidates are the fast ones, normalised together and compared without branches.
   const V2 bound{filter.bound, filter.bound};
@@ -508,7 +492,7 @@ namespace {
   const V2 lo = max2(max2(fast.gap[0].lo, fast.gap[1].lo), fast.gap[2].lo);
   const V2 hi = max2(max2(fast.gap[0].hi, fast.gap[1].hi), fast.gap[2].hi);
   const double largest = std::max({lo[0], lo[1], hi[0]});
-  const EdgeFilter filter = edgeFilter(a, b, p.d);
+  const obb3_detail::EdgeBound filter = edgeFilter(a, b);
   if (largest > filter.bound) return false;
   if (largest < -filter.bound) return true;
   for (int e = 0; e < 9; ++e) {
@@ -548,7 +532,6 @@ bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
 #if defined(CARDEMO_BATCH_AVX2)
   if (batchPath() != BatchPath::kPortable) {
-    // The kernel computes edgeFilter's bound itself, from the same numbers.
     const obb3_detail::Verdict verdict = obb3_detail::overlapAvx2(
         numbersOf(a), numbersOf(b), std::max(a.frameDefect(), b.frameDefect()));
     if (verdict != obb3_detail::Verdict::kUndecided) {

@@ -239,20 +239,6 @@ struct Candidates {
   }
 }
 
-// obb3.cpp's edgeFilter: the same operations in the same order (Eigen's sum of three is
-// (x + y) + z), so the same bits.
-[[gnu::always_inline]] inline EdgeBound edgeBound(const double* a, const double* b, double phi) {
-  constexpr double kU = 0x1p-53;
-  if (!(phi <= 0x1p-30)) return {__builtin_inf(), __builtin_inf(), __builtin_inf()};
-  const double *ca = a + BoxNumbers::kCenter, *cb = b + BoxNumbers::kCenter;
-  const double *ha = a + BoxNumbers::kHalf, *hb = b + BoxNumbers::kHalf;
-  const double scale = __builtin_fabs(cb[0] - ca[0]) + __builtin_fabs(cb[1] - ca[1]) +
-                       __builtin_fabs(cb[2] - ca[2]) + (ha[0] + ha[1] + ha[2]) +
-                       (hb[0] + hb[1] + hb[2]);
-  const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
-  return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
-}
-
 }  // namespace
 
 Verdict overlapAvx2(const double* a, const double* b, double phi) {

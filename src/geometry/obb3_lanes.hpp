@@ -21,15 +21,32 @@ struct BoxNumbers {
 /// overlapAvx2's verdict.
 enum class Verdict { kSeparated, kOverlapping, kUndecided };
 
-/// The A-frame filter of obb3.cpp (edgeFilter), from the same numbers in the same order.
+/// The A-frame filter of obb3.cpp's edge gaps (obb3.cpp gives the argument).
 struct EdgeBound {
   double bound;        ///< On |gap times axis length|, metres.
   double min_length2;  ///< Floor on the squared axis length for a normalised fast gap.
   double scale;        ///< The pair's scale, metres (infinite with the bound).
 };
 
+/// The edge filter for boxes `a` and `b` (BoxNumbers) and their larger frame defect `phi`: every
+/// field infinite when phi > 2^-30. Internal linkage, so that the AVX2 file's copy is never the
+/// one the other files call.
+[[gnu::always_inline]] static inline EdgeBound edgeBound(const double* a, const double* b,
+                                                         double phi) {
+  constexpr double kU = 0x1p-53;
+  if (!(phi <= 0x1p-30)) return {__builtin_inf(), __builtin_inf(), __builtin_inf()};
+  const double *ca = a + BoxNumbers::kCenter, *cb = b + BoxNumbers::kCenter;
+  const double *ha = a + BoxNumbers::kHalf, *hb = b + BoxNumbers::kHalf;
+  // The pair's scale: it bounds |d|, each projected radius and so each gap on a unit axis.
+  const double scale = __builtin_fabs(cb[0] - ca[0]) + __builtin_fabs(cb[1] - ca[1]) +
+                       __builtin_fabs(cb[2] - ca[2]) + (ha[0] + ha[1] + ha[2]) +
+                       (hb[0] + hb[1] + hb[2]);
+  const double root = (64.0 * kU + 8.0 * phi) / 0x1p-40;
+  return {(32.0 * kU + 6.0 * phi) * scale, root * root, scale};
+}
+
 /// overlapObb3's common case: separated on a face axis, or decided by every fast edge gap clearing
-/// the filter for the larger frame defect `phi` (obb3.cpp's edgeFilter); undecided otherwise. `a`
+/// the filter for the larger frame defect `phi` (edgeBound); undecided otherwise. `a`
 /// and `b` hold BoxNumbers. Call only when geometry/batch_path says the CPU has AVX2.
 Verdict overlapAvx2(const double* a, const double* b, double phi);
 
@@ -57,7 +74,7 @@ struct LargestGap {
 };
 
 /// collideObb3's largest gap, when every edge gap clears the filter for the larger frame defect
-/// `phi`: |gap| > bound and squared axis length > min_length2 (obb3.cpp's edgeFilter; no bound
+/// `phi`: |gap| > bound and squared axis length > min_length2 (edgeBound; no bound
 /// outside kRootFreeMinScale..kRootFreeMaxScale). False otherwise, with only the pose written. `a`
 /// and `b` hold BoxNumbers. Call only when geometry/batch_path says the CPU has AVX2.
 bool largestGapAvx2(const double* a, const double* b, double phi, LargestGap& out);
