@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/trig.hpp"
+
 namespace cardemo {
 
 Eigen::Vector2d unitFromDegrees(double degrees) {
@@ -16,8 +18,8 @@ Eigen::Vector2d unitFromDegrees(double degrees) {
     ++quadrant;
   }
   const double rad = r * (std::numbers::pi / 180.0);
-  const double c = r == 0.0 ? 1.0 : std::cos(rad);
-  const double s = r == 0.0 ? 0.0 : std::sin(rad);
+  const trig::CosSin unit = r == 0.0 ? trig::CosSin{1.0, 0.0} : trig::cosSin(rad);
+  const double c = unit.cos, s = unit.sin;
   switch (quadrant) {
     case 0:
       return {c, s};
@@ -31,7 +33,8 @@ Eigen::Vector2d unitFromDegrees(double degrees) {
 }
 
 Eigen::Vector2d unitFromRadians(double radians) {
-  return {std::cos(radians), std::sin(radians)};
+  const trig::CosSin unit = trig::cosSin(radians);
+  return {unit.cos, unit.sin};
 }
 
 double wrapRadians(double radians) {
@@ -45,7 +48,7 @@ double wrapRadians(double radians) {
 }
 
 double degreesOf(const Eigen::Vector2d& direction) {
-  double d = std::atan2(direction.y(), direction.x()) * (180.0 / std::numbers::pi);
+  double d = trig::atan2(direction.y(), direction.x()) * (180.0 / std::numbers::pi);
   if (d <= -180.0) d += 360.0;
   return d;
 }

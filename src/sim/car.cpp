@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "geometry/angle.hpp"
+#include "geometry/trig.hpp"
 #include "sim/car_schemes.hpp"
 
 namespace cardemo {
@@ -30,7 +31,7 @@ double gripLock(const CarParams& params, double speed) {
   // "Vehicle Dynamics and Control", 2nd ed., sec. 2.2); capping it at the grip gives the lock.
   const double v2 = speed * speed;
   if (!(v2 > 0.0)) return 0.5 * std::numbers::pi;
-  return std::atan(params.grip * params.wheelbase / v2);
+  return trig::atan(params.grip * params.wheelbase / v2);
 }
 
 double effectiveLock(const CarParams& params, double speed, bool handbrake) {
@@ -48,7 +49,8 @@ CarState slideCar(CarState next, const CarState& steered, bool handbrake, const 
     // (at the rear's reduced grip) then pulls the velocity round.
     const double turn = wrapRadians(next.heading - steered.heading);
     if (turn != 0.0) {
-      const double c = std::cos(turn), s = std::sin(turn);
+      const trig::CosSin unit = trig::cosSin(turn);
+      const double c = unit.cos, s = unit.sin;
       const double forward = next.speed * c + next.slip * s;
       next.slip = next.slip * c - next.speed * s;
       next.speed = forward;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/angle.hpp"
+#include "geometry/trig.hpp"
 
 namespace cardemo {
 namespace {
@@ -11,7 +12,7 @@ namespace {
 // Bicycle-model curvature of the path, 1/m: yaw rate = v tan(delta) / L (Rajamani, "Vehicle
 // Dynamics and Control", 2nd ed., sec. 2.2), so heading changes by tan(delta) / L per metre.
 double curvatureOf(const CarState& s, const CarParams& p) {
-  return std::tan(s.steer) / p.wheelbase;
+  return trig::tan(s.steer) / p.wheelbase;
 }
 
 // The heading's unit vector; the stored one when the angle has not moved, so that an exact
@@ -97,7 +98,7 @@ CarState stepSemiImplicitEuler(const CarState& steered, const SpeedLaw& law,
 
   // Kinematic bicycle model, reference point moving along the heading (no slip):
   // yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2).
-  const double yaw_rate = next.speed * std::tan(next.steer) / params.wheelbase;
+  const double yaw_rate = next.speed * trig::tan(next.steer) / params.wheelbase;
   next.heading = wrapRadians(steered.heading + yaw_rate * dt);
   // Recomputed from the angle only when it changed: an exact axis-aligned start direction from
   // unitFromDegrees survives straight driving, and the direction can never drift off unit length.
@@ -182,7 +183,8 @@ CarState stepArcRk4(const CarState& steered, const SpeedLaw& law, const CarParam
   Eigen::Vector2d chord = steered.direction * distance;
   if (turn != 0.0) {
     const double half = 0.5 * turn;
-    const double c = std::cos(half), s = std::sin(half);
+    const trig::CosSin unit = trig::cosSin(half);
+    const double c = unit.cos, s = unit.sin;
     const double length = distance * (s / half);
     const Eigen::Vector2d& u = steered.direction;
     chord = Eigen::Vector2d(u.x() * c - u.y() * s, u.x() * s + u.y() * c) * length;
