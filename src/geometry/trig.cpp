@@ -62,7 +62,9 @@ struct Reduced {
 // k kHalfPi2; the subtraction of the second part is made exact by TwoSum (Knuth, TAOCP 2,
 // 4.2.2), so that an x a few ulps from a multiple of pi/2 keeps its relative accuracy.
 Reduced reduce(double x) {
-  const double k = std::nearbyint(x * kTwoOverPi);
+  // Round to nearest, ties to even, without a libm call: |x 2/pi| < 2^51, so adding 1.5 * 2^52
+  // leaves no fraction bits, and subtracting it again is exact.
+  const double k = (x * kTwoOverPi + 0x1.8p52) - 0x1.8p52;
   const double t = x - k * kHalfPi1;
   const double w = -(k * kHalfPi2);
   const double sum = t + w;
