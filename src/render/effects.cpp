@@ -132,6 +132,9 @@ void Effects::observe(const World& world) {
 void Effects::takeHit(const World& world, const HitEvent& hit) {
   if (hit.collider < collider_flash_.size()) collider_flash_[hit.collider] = hit.frame;
   player_flash_ = hit.frame;
+  // A touch that costs nothing (below the damage threshold, or a bounce inside a crash already
+  // charged) shows as contact only: a "-0", a dent and a pulsing bar would say it did harm.
+  if (hit.damage <= 0) return;
   // A new hit restarts the shake with whichever amplitude is larger: the fresh one or what is
   // left of the last.
   const float left = fade(shake_start_, settings_.shake_frames);

@@ -71,6 +71,29 @@ TEST(Effects, HitFlashShakeNumberPulseAndDentsAppearThenDecay) {
   EXPECT_EQ(fx.dents().size(), 2u);
 }
 
+TEST(Effects, ATouchThatCostsNothingFlashesButLeavesNoNumberDentOrPulse) {
+  // A car 5 cm beyond the player's nose; a short burst of throttle, then coasting into it at
+  // well under the 1 m/s damage threshold.
+  World world(sceneWith({parkedCar("A", 2.25 + 0.9 + 0.05, 0.0, 90.0)}));
+  Effects fx(world);
+  while (world.car().speed < 0.4 && world.frame() < 200) {
+    world.step(throttle());
+    fx.observe(world);
+  }
+  while (world.hits().empty() && world.frame() < 600) {
+    world.step(InputFrame{});
+    fx.observe(world);
+  }
+  ASSERT_EQ(world.hits().size(), 1u);
+  ASSERT_EQ(world.hits()[0].damage, 0);
+  EXPECT_GT(fx.playerFlash(), 0.9f);
+  EXPECT_GT(fx.colliderFlash(0), 0.9f);
+  EXPECT_TRUE(fx.numbers().empty());
+  EXPECT_TRUE(fx.dents().empty());
+  EXPECT_EQ(fx.healthPulse(), 0.0f);
+  EXPECT_EQ(fx.shake(), Eigen::Vector2f::Zero());
+}
+
 TEST(Effects, ShakeGrowsWithDamageAndIsTheSameOnEveryRun) {
   auto shakeAfterHit = [](double distance) {
     World world(sceneWith({parkedCar("A", distance, 0.0, 90.0)}));
