@@ -18,18 +18,9 @@ Eigen::Vector2d unitFromDegrees(double degrees) {
     ++quadrant;
   }
   const double rad = r * (std::numbers::pi / 180.0);
-  const trig::CosSin unit = r == 0.0 ? trig::CosSin{1.0, 0.0} : trig::cosSin(rad);
-  const double c = unit.cos, s = unit.sin;
-  switch (quadrant) {
-    case 0:
-      return {c, s};
-    case 1:
-      return {-s, c};
-    case 2:
-      return {-c, -s};
-    default:
-      return {s, -c};
-  }
+  const trig::CosSin unit =
+      trig::turnedByQuarters(r == 0.0 ? trig::CosSin{1.0, 0.0} : trig::cosSin(rad), quadrant);
+  return {unit.cos, unit.sin};
 }
 
 Eigen::Vector2d unitFromRadians(double radians) {

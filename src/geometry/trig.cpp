@@ -103,17 +103,19 @@ CosSin cosSin(double radians) {
     if (std::abs(x) > kMaxReduced) x = std::remainder(x, 2.0 * std::numbers::pi);
   }
   const Reduced r = std::abs(x) <= kQuarterPi ? Reduced{x, 0.0, 0} : reduce(x);
-  const double s = sinKernel(r.high, r.low);
-  const double c = cosKernel(r.high, r.low);
-  switch (r.quadrant) {
+  return turnedByQuarters({cosKernel(r.high, r.low), sinKernel(r.high, r.low)}, r.quadrant);
+}
+
+CosSin turnedByQuarters(CosSin unit, int quarters) {
+  switch (quarters) {
     case 0:
-      return {c, s};
+      return unit;
     case 1:
-      return {-s, c};
+      return {-unit.sin, unit.cos};
     case 2:
-      return {-c, -s};
+      return {-unit.cos, -unit.sin};
     default:
-      return {s, -c};
+      return {unit.sin, -unit.cos};
   }
 }
 

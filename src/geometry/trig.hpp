@@ -18,6 +18,10 @@ struct CosSin {
 /// (std::remainder), which is deterministic but no longer close to the true period.
 [[nodiscard]] CosSin cosSin(double radians);
 
+/// (cos, sin) of the angle of `unit` plus `quarters` right angles (0 to 3): exact, a swap and
+/// signs.
+[[nodiscard]] CosSin turnedByQuarters(CosSin unit, int quarters);
+
 /// tan of `radians`, as sin / cos of cosSin (within about two ulps).
 [[nodiscard]] double tan(double radians);
 
