@@ -57,7 +57,7 @@ struct Reduced {
   int quadrant;
 };
 
-// Cody and Waite's reduction (Muller, "Elementary Functions", 3rd ed., 11.2) with pi/2 in three
+// Cody and Waite's reduction (Muller, "Elementary Functions", 3rd ed., ch. 11) with pi/2 in three
 // parts. x - k kHalfPi1 is exact (Sterbenz: both lie within a factor two of each other) and so is
 // k kHalfPi2; the subtraction of the second part is made exact by TwoSum (Knuth, TAOCP 2,
 // 4.2.2), so that an x a few ulps from a multiple of pi/2 keeps its relative accuracy.
