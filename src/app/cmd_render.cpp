@@ -125,6 +125,7 @@ int runRenderCommand(const RenderOptions& options) {
   settings.options.effects = &observers->effects;
   settings.options.sprites = options.sprites;
   settings.options.debug_overlay = options.debug;
+  settings.options.frame_counter = true;  // a picture of frame N says which frame it is
   settings.options.help = options.help;
   settings.options.status = baseName(options.input) + "  -  " + world->scene().name;
   if (std::string why = renderPng(*world, settings, options.out); !why.empty()) return fail(why);

@@ -26,8 +26,11 @@ struct DrawOptions {
   bool paused = false;
   /// A large one-line message at the top instead of PAUSED (e.g. "YOUR TURN"); empty: none.
   std::string banner;
-  /// Frames per second shown in the HUD (0 hides it).
+  /// Frames per second, shown in the HUD with the debug overlay (0 hides it).
   double fps = 0.0;
+  /// Shows the frame number in the HUD (as the debug overlay and a replay's playback do): a
+  /// driving player sees speed and hits only.
+  bool frame_counter = false;
   /// Replay speed shown in the HUD while playing a replay (0 hides it).
   double playback_speed = 0.0;
   /// The run has ended (GAME OVER, PARKED, TIME UP): the HUD's speed reads "stopped", not the

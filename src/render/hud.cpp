@@ -117,8 +117,14 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
                                    : format("%.0f km/h", std::abs(world.car().speed) * 3.6),
                   kText});
   rows.push_back({"Hits", std::to_string(world.hits().size()), kText});
-  rows.push_back({"Frame", std::to_string(world.frame()), kDim});
-  if (options.fps > 0.0) rows.push_back({"FPS", format("%.0f", options.fps), kDim});
+  // Developer rows: a player driving sees speed and hits; the debug overlay (B), a replay's
+  // playback and `cardemo render` add the frame, the overlay the frame rate.
+  if (options.frame_counter || options.debug_overlay || options.playback_speed > 0.0) {
+    rows.push_back({"Frame", std::to_string(world.frame()), kDim});
+  }
+  if (options.debug_overlay && options.fps > 0.0) {
+    rows.push_back({"FPS", format("%.0f", options.fps), kDim});
+  }
   if (options.playback_speed > 0.0) {
     rows.push_back({"Replay speed", format("%gx", options.playback_speed), kDim});
   }

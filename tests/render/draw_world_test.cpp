@@ -322,12 +322,33 @@ TEST(Hud, HealthColourGoesFromRedToGreen) {
   EXPECT_EQ(healthColor(-1.0), empty);
 }
 
+TEST(Hud, APlayerSeesSpeedAndHitsTheOverlayAddsFrameAndFps) {
+  World world(sceneWith({}));
+  Camera camera;
+  DrawOptions playing;
+  playing.fps = 59.6;
+  const RecordingCanvas plain = drawn(world, camera, playing);
+  EXPECT_TRUE(plain.hasText("km/h"));
+  EXPECT_TRUE(plain.hasText("Hits"));
+  EXPECT_FALSE(plain.hasText("Frame"));
+  EXPECT_FALSE(plain.hasText("FPS"));
+  playing.debug_overlay = true;
+  const RecordingCanvas overlay = drawn(world, camera, playing);
+  EXPECT_TRUE(overlay.hasText("Frame"));
+  EXPECT_TRUE(overlay.hasText("FPS"));
+  DrawOptions rendered;
+  rendered.frame_counter = true;
+  EXPECT_TRUE(drawn(world, camera, rendered).hasText("Frame"));
+  EXPECT_FALSE(drawn(world, camera, rendered).hasText("FPS"));
+}
+
 TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
   World world(sceneWith({}));
   Camera camera;
   EXPECT_FALSE(drawn(world, camera).hasText("FPS"));
   EXPECT_FALSE(drawn(world, camera).hasText("PAUSED"));
   DrawOptions options;
+  options.debug_overlay = true;
   options.fps = 59.6;
   options.playback_speed = 2.0;
   options.paused = true;
