@@ -96,13 +96,12 @@ double cosKernel(double x, double y) {
 }  // namespace
 
 CosSin cosSin(double radians) {
-  double x = radians;
-  if (x == 0.0) return {1.0, x};  // keeps the sign of zero
-  if (!(std::abs(x) <= kQuarterPi)) {
-    if (!std::isfinite(x)) return {x - x, x - x};
-    if (std::abs(x) > kMaxReduced) x = std::remainder(x, 2.0 * std::numbers::pi);
-  }
-  const Reduced r = std::abs(x) <= kQuarterPi ? Reduced{x, 0.0, 0} : reduce(x);
+  if (radians == 0.0) return {1.0, radians};  // keeps the sign of zero
+  if (std::abs(radians) <= kQuarterPi) return {cosKernel(radians, 0.0), sinKernel(radians, 0.0)};
+  if (!std::isfinite(radians)) return {radians - radians, radians - radians};
+  const double x =
+      std::abs(radians) <= kMaxReduced ? radians : std::remainder(radians, 2.0 * std::numbers::pi);
+  const Reduced r = reduce(x);
   return turnedByQuarters({cosKernel(r.high, r.low), sinKernel(r.high, r.low)}, r.quadrant);
 }
 
