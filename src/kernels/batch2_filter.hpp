@@ -8,9 +8,9 @@
 /// fmadd(a, b, c) = a*b + c, fmsub(a, b, c) = a*b - c, fnmadd(a, b, c) = c - a*b (each rounded
 /// once), abs, max, and gtBits(a, b): bit k set when lane k of a > lane k of b.
 //
-// Included by batch2_avx2.cpp and batch_avx512.cpp only; everything here has internal linkage.
+// Included by filter_avx2.cpp and batch_avx512.cpp only; everything here has internal linkage.
 //
-// Why the verdict is exact (docs/architecture.md, "The float pre-filter", has the derivation).
+// Why the verdict is exact (docs/architecture.md, "The float pre-filters", sums it up).
 // Write u = 2^-24, R = |cB - cA|, H = hAx + hAy + hBx + hBy, and g_k for the gap on axis k computed
 // with exact arithmetic from the stored doubles (the quantity overlapObb2 rounds). Under the
 // standard model fl(x op y) = (x op y)(1 + d), |d| <= u (Higham, "Accuracy and Stability of
@@ -29,6 +29,7 @@
 #include <cstdint>
 
 #include "kernels/batch_entry.hpp"
+#include "kernels/filter_run.hpp"
 
 namespace cardemo::batch_detail {
 namespace {
@@ -44,12 +45,6 @@ FilterQuery2<F> splatQuery(const Box2FilterOne& a) {
   return {F::splat(a.x),  F::splat(a.y),  F::splat(a.ux),   F::splat(a.uy),
           F::splat(a.hx), F::splat(a.hy), F::splat(a.bound)};
 }
-
-// Lane bits of the filter's verdict on one lane group.
-struct FilterVerdict {
-  unsigned separated;  // decided: separated on some axis
-  unsigned decided;    // separated or overlapping for certain
-};
 
 // The four gaps of overlapObb2 in float, in A's frame after the centre difference. Explicit fused
 // multiply-adds round fewer times than the bound allows for; they cannot change a verdict.
@@ -76,27 +71,7 @@ template <class F>
   return {gtBits(m, margin), gtBits(abs(m), margin)};
 }
 
-// kHitBytes[m] holds eight hit bytes, byte k = 1 - bit k of m: one load per lane mask.
-struct HitByteTable {
-  std::uint64_t bytes[256];
-  constexpr HitByteTable() : bytes{} {
-    for (unsigned m = 0; m < 256; ++m) {
-      for (unsigned k = 0; k < 8; ++k) {
-        if (((m >> k) & 1u) == 0) bytes[m] |= std::uint64_t{1} << (8 * k);
-      }
-    }
-  }
-};
-inline constexpr HitByteTable kHitBytes;
-
-// Eight hit bytes, hit[k] = 1 - bit k of `separated`.
-[[gnu::always_inline]] inline std::uint64_t hitBytes(unsigned separated) {
-  return kHitBytes.bytes[separated & 0xFFu];
-}
-
-// Runs the filter over [first, last) (the float arrays hold whole lane groups, padded), writes
-// every decided verdict and calls `exact(i0, i1)` (the double kernel, which rewrites hit[i0, i1))
-// for each lane group with an undecided lane. Returns the number of undecided boxes.
+// Runs the filter over [first, last) (runFiltered, filter_run.hpp).
 template <class F, class Exact>
 std::size_t runFilteredOverlap2(const Box2FilterOne& fa, const Box2FilterArrays& fb,
                                 std::size_t first, std::size_t last, std::uint8_t* hit,
@@ -105,31 +80,8 @@ std::size_t runFilteredOverlap2(const Box2FilterOne& fa, const Box2FilterArrays&
   // reference would be reloaded after every store.
   const FilterQuery2<F> q = splatQuery<F>(fa);
   const Box2FilterArrays b = fb;
-  std::size_t undecided = 0;
-  std::size_t i = first;
-  for (; i + F::kWidth <= last; i += F::kWidth) {
-    const FilterVerdict v = filter2<F>(q, b, i);
-    for (std::size_t k = 0; k < F::kWidth; k += 8) {
-      const std::uint64_t bytes = hitBytes(v.separated >> k);
-      __builtin_memcpy(hit + i + k, &bytes, 8);
-    }
-    const unsigned open = ~v.decided & ((1u << F::kWidth) - 1u);
-    if (open != 0) [[unlikely]] {
-      exact(i, i + F::kWidth);
-      undecided += static_cast<std::size_t>(__builtin_popcount(open));
-    }
-  }
-  if (i == last) return undecided;
-  // The tail: a whole group computed on the padding, the live lanes written.
-  const std::size_t lanes = last - i;
-  const FilterVerdict v = filter2<F>(q, b, i);
-  for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
-  const unsigned open = ~v.decided & ((1u << lanes) - 1u);
-  if (open != 0) {
-    exact(i, last);
-    undecided += static_cast<std::size_t>(__builtin_popcount(open));
-  }
-  return undecided;
+  return runFiltered<F::kWidth>(
+      first, last, hit, [q, b](std::size_t i) { return filter2<F>(q, b, i); }, exact);
 }
 
 }  // namespace

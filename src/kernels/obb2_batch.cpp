@@ -6,26 +6,14 @@
 #include <limits>
 
 #include "geometry/batch_path.hpp"
+#include "kernels/filter_copy.hpp"
 
 namespace cardemo {
 namespace {
 
-// The float pre-filter's range (batch2_filter.hpp): centres within 2^60 m of the reference point
-// and half extents up to 2^60 m keep every float operation far from overflow.
-constexpr double kFilterRange = 0x1p60;
-// Whole lane groups of the widest float path (AVX-512F: sixteen floats).
-constexpr std::size_t kFilterGroup = 16;
-
-bool inFilterRange(double x) {
-  return std::abs(x) <= kFilterRange;  // false for NaN
-}
-
-// The smallest float >= x (x finite, within float range).
-float roundUp(double x) {
-  float r = static_cast<float>(x);
-  if (static_cast<double>(r) < x) r = std::nextafter(r, std::numeric_limits<float>::infinity());
-  return r;
-}
+using batch_detail::inFilterRange;
+using batch_detail::kFilterGroup;
+using batch_detail::roundUp;
 
 // The pre-filter's decision margin (batch2_filter.hpp): 2^-18 H + 2^-22 (|xA| + |yA| + max |xB| +
 // |yB|) + 2^-100, split into a share per box (its half extents) and a share per query (the rest).

@@ -6,8 +6,24 @@
 #include <limits>
 
 #include "geometry/batch_path.hpp"
+#include "kernels/filter_copy.hpp"
 
 namespace cardemo {
+namespace {
+
+using batch_detail::inFilterRange;
+using batch_detail::kFilterGroup;
+using batch_detail::roundUp;
+
+// One box's share of the float pre-filter's margin (batch3_filter.hpp): 2^-17 times its half
+// extents' sum, plus 2^-21 times |x|_1 of its float centre, plus `floor`. The factor 1 + 2^-30
+// covers the double roundings of these sums, roundUp the conversion.
+float filterShare(double half_sum, double reach, double floor) {
+  return roundUp((0x1p-17 * half_sum + 0x1p-21 * reach + floor) * (1.0 + 0x1p-30));
+}
+
+}  // namespace
+
 Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
   for (auto* group : {&center_, &half_}) {
     for (std::vector<double>& v : *group) v.reserve(boxes.size());
@@ -23,6 +39,43 @@ Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
             b.rotation()(k, j));
       }
     }
+  }
+  if (boxes.empty()) return;
+
+  // The float copy: centres relative to the middle of the centres' bounds (the difference taken
+  // in double), so the rounding to float is relative to the batch's spread, not to the distance
+  // from the origin.
+  Eigen::Vector3d lo = boxes[0].center, hi = boxes[0].center;
+  for (const Obb3& b : boxes) {
+    lo = lo.cwiseMin(b.center);
+    hi = hi.cwiseMax(b.center);
+  }
+  reference_ = 0.5 * lo + 0.5 * hi;
+  filter_usable_ = true;
+  const std::size_t padded = (boxes.size() + kFilterGroup - 1) / kFilterGroup * kFilterGroup;
+  for (std::size_t i = 0; i < padded && filter_usable_; ++i) {
+    const Obb3& b = boxes[std::min(i, boxes.size() - 1)];
+    const Eigen::Vector3d d = b.center - reference_;
+    double reach = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const int e = static_cast<int>(k);
+      filter_usable_ = filter_usable_ && inFilterRange(d[e]) && inFilterRange(b.half[e]);
+      filter_center_[k].push_back(static_cast<float>(d[e]));
+      filter_half_[k].push_back(static_cast<float>(b.half[e]));
+      reach += std::abs(static_cast<double>(filter_center_[k].back()));
+      for (std::size_t j = 0; j < 3; ++j) {
+        filter_rotation_[3 * j + k].push_back(
+            static_cast<float>(b.rotation()(e, static_cast<int>(j))));
+      }
+    }
+    filter_bound_.push_back(filterShare(b.half.sum(), reach, 0.0));
+  }
+  if (!filter_usable_) {
+    for (auto* group : {&filter_center_, &filter_half_}) {
+      for (Aligned<float>& v : *group) Aligned<float>().swap(v);
+    }
+    for (Aligned<float>& v : filter_rotation_) Aligned<float>().swap(v);
+    Aligned<float>().swap(filter_bound_);
   }
 }
 
@@ -45,7 +98,11 @@ std::size_t Obb3Batch::memoryBytes() const {
   for (const auto& v : center_) doubles += v.capacity();
   for (const auto& v : rotation_) doubles += v.capacity();
   for (const auto& v : half_) doubles += v.capacity();
-  return doubles * sizeof(double);
+  std::size_t floats = filter_bound_.capacity();
+  for (const auto& v : filter_center_) floats += v.capacity();
+  for (const auto& v : filter_rotation_) floats += v.capacity();
+  for (const auto& v : filter_half_) floats += v.capacity();
+  return doubles * sizeof(double) + floats * sizeof(float);
 }
 
 batch_detail::Box3Arrays Obb3Batch::arrays() const {
@@ -57,6 +114,17 @@ batch_detail::Box3Arrays Obb3Batch::arrays() const {
   a.hx = half_[0].data();
   a.hy = half_[1].data();
   a.hz = half_[2].data();
+  return a;
+}
+
+batch_detail::Box3FilterArrays Obb3Batch::filterArrays() const {
+  batch_detail::Box3FilterArrays a{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    a.c[k] = filter_center_[k].data();
+    a.h[k] = filter_half_[k].data();
+  }
+  for (std::size_t m = 0; m < 9; ++m) a.r[m] = filter_rotation_[m].data();
+  a.bound = filter_bound_.data();
   return a;
 }
 
@@ -95,25 +163,55 @@ batch_detail::Box3One unpack(const Obb3& a) {
   return one;
 }
 
+#if defined(CARDEMO_BATCH_AVX2)
+// A's float copy for the pre-filter, or false when A or the batch is outside the filter's range,
+// or the frames are too far from orthonormal for the A-frame gaps (setFilter turned that off).
+bool unpackFilter(const Obb3& a, const Obb3Batch& many, const batch_detail::Box3One& one,
+                  batch_detail::Box3FilterOne& out) {
+  if (!many.filterUsable() || !(one.edge_gap_error < 1.0)) return false;
+  const Eigen::Vector3d d = a.center - many.filterReference();
+  double reach = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    if (!(inFilterRange(d[k]) && inFilterRange(a.half[k]))) return false;
+    out.c[k] = static_cast<float>(d[k]);
+    out.h[k] = static_cast<float>(a.half[k]);
+    reach += std::abs(static_cast<double>(out.c[k]));
+  }
+  for (std::size_t m = 0; m < 9; ++m) out.r[m] = static_cast<float>(one.r[m]);
+  out.bound = filterShare(a.half.sum(), reach, 0x1p-100);
+  return true;
+}
+#endif
+
 }  // namespace
 
-void overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std::uint8_t> hit) {
+std::size_t overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std::uint8_t> hit) {
   assert(hit.size() == many.size());
   batch_detail::Box3One one = unpack(a);
   setFilter(a, many, one);
-#if defined(CARDEMO_BATCH_AVX512)
-  if (batchPath() == BatchPath::kAvx512) {
-    batch_detail::overlap3Avx512(one, many.arrays(), 0, many.size(), hit.data());
-    return;
-  }
-#endif
+  const std::size_t n = many.size();
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() != BatchPath::kPortable) {
-    batch_detail::overlap3Avx2(one, many.arrays(), 0, many.size(), hit.data());
-    return;
+  const BatchPath path = batchPath();
+  if (path != BatchPath::kPortable) {
+    // The float pre-filter runs on AVX2 on the AVX-512 path too (eight floats a step; its lane
+    // groups left undecided go to the AVX2 double kernel).
+    batch_detail::Box3FilterOne fa{};
+    if (unpackFilter(a, many, one, fa)) {
+      return batch_detail::overlap3FilteredAvx2(one, many.arrays(), fa, many.filterArrays(), 0, n,
+                                                hit.data());
+    }
+#if defined(CARDEMO_BATCH_AVX512)
+    if (path == BatchPath::kAvx512) {
+      batch_detail::overlap3Avx512(one, many.arrays(), 0, n, hit.data());
+      return n;
+    }
+#endif
+    batch_detail::overlap3Avx2(one, many.arrays(), 0, n, hit.data());
+    return n;
   }
 #endif
-  batch_detail::overlap3Portable(one, many.arrays(), 0, many.size(), hit.data());
+  batch_detail::overlap3Portable(one, many.arrays(), 0, n, hit.data());
+  return 0;
 }
 
 void separationObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<double> separation) {

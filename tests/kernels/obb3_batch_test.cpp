@@ -234,6 +234,138 @@ TEST(Obb3BatchRandom, FastFilterAgreesAroundItsThresholds) {
   EXPECT_LT(hits, pairs);
 }
 
+// Boxes of car to lorry size at random headings and tilts within `reach` metres of A.
+std::vector<Obb3> boxesAround(const Obb3& a, std::mt19937_64& rng, int n, double reach) {
+  std::vector<Obb3> boxes;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d size{test3::uniform(rng, 3.5, 12.0), test3::uniform(rng, 1.6, 2.6),
+                               test3::uniform(rng, 1.2, 4.0)};
+    const Eigen::Quaterniond q = test3::randomRotation(rng);
+    boxes.push_back(Obb3::fromQuaternion(a.center + test3::randomOffset(rng, 0.0, reach), q, size));
+  }
+  return boxes;
+}
+
+// Every verdict of overlapObb3Batch on every path equals the scalar overlapObb3's; returns the
+// pairs the float pre-filter left to the double kernel (summed over the SIMD paths) and counts
+// the pairs those paths saw in `pairs`.
+std::size_t expectScalarVerdicts(const Obb3& a, const std::vector<Obb3>& boxes,
+                                 const Obb3Batch& many, std::size_t& pairs, const char* what) {
+  std::size_t sent_on = 0;
+  for (const BatchPath path : testing::availableBatchPaths()) {
+    setBatchPath(path);
+    std::vector<std::uint8_t> hit(boxes.size(), 7);
+    const std::size_t undecided = overlapObb3Batch(a, many, hit);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      EXPECT_EQ(hit[i], overlapObb3(a, boxes[i]) ? 1 : 0)
+          << what << " " << batchPathName(path) << " box " << i;
+    }
+    if (path == BatchPath::kPortable) {
+      EXPECT_EQ(undecided, 0u) << "the portable path has no float pre-filter";
+    } else {
+      pairs += boxes.size();
+      sent_on += undecided;
+    }
+  }
+  return sent_on;
+}
+
+TEST(Obb3Batch, FloatFilterDecidesAlmostEveryRandomPair) {
+  testing::BatchPathGuard guard;
+  std::mt19937_64 rng(0x3f17e5);
+  std::size_t pairs = 0, sent_on = 0;
+  for (int k = 0; k < test3::scaledCount(100); ++k) {
+    const Eigen::Vector3d far{test3::farCoordinate(rng), test3::farCoordinate(rng),
+                              test3::farCoordinate(rng)};
+    const Obb3 a = Obb3::fromQuaternion(far, test3::randomRotation(rng), {4.5, 1.8, 1.5});
+    const std::vector<Obb3> boxes = boxesAround(a, rng, 400, 12.0);
+    const Obb3Batch many(boxes);
+    ASSERT_TRUE(many.filterUsable());
+    sent_on += expectScalarVerdicts(a, boxes, many, pairs, "random");
+  }
+  // Only pairs within about 1e-4 m of touching (or whose lane group holds one) go on.
+  if (pairs > 0) {
+    EXPECT_LE(sent_on * 50, pairs) << sent_on << " of " << pairs;
+  }
+  std::printf("    %zu of %zu pairs sent to the double kernel\n", sent_on, pairs);
+}
+
+// Pairs a hair from touching along one of their fifteen axes (or a random direction), where the
+// filter must hand over to double: gaps of either sign from 1e-12 m to 1 cm, boxes from 1 cm to
+// 100 m, near the origin or 1e6-1e7 m out, the batch sometimes widened by a box 1e4 m away, which
+// moves its reference point away from A.
+TEST(Obb3Batch, NearTouchingPairsAtTheFilterMarginMatchScalar) {
+  testing::BatchPathGuard guard;
+  std::mt19937_64 rng(0x3f17e6);
+  std::size_t pairs = 0, sent_on = 0;
+  for (int k = 0; k < test3::scaledCount(600); ++k) {
+    const Obb3 a = rng() % 2 == 0 ? test3::randomBoxAt(rng, {0, 0, 0}) : test3::randomBox(rng);
+    std::vector<Obb3> boxes;
+    const int n = 1 + static_cast<int>(rng() % 40);
+    for (int i = 0; i < n; ++i) {
+      Obb3 b = test3::randomBoxAt(rng, {0, 0, 0});
+      const int axis = static_cast<int>(rng() % 16);
+      Eigen::Vector3d u = axis < 15 ? test3::candidateAxis(a, b, axis) : test3::randomUnit(rng);
+      if (u.isZero()) u = test3::randomUnit(rng);
+      const double sign = test3::randomSign(rng);
+      test3::placeAtGap(a, b, sign * u,
+                        test3::randomSign(rng) * test3::logUniform(rng, 1e-12, 1e-2));
+      boxes.push_back(b);
+    }
+    if (rng() % 4 == 0) {
+      boxes.push_back(test3::randomBoxAt(rng, a.center + test3::randomOffset(rng, 1e3, 1e4)));
+    }
+    const Obb3Batch many(boxes);
+    sent_on += expectScalarVerdicts(a, boxes, many, pairs, "near touching");
+  }
+  if (pairs > 0) {
+    // Gaps below the margin must reach the double kernel, and wider ones must not all do so.
+    EXPECT_GT(sent_on, pairs / 10) << sent_on << " of " << pairs;
+    EXPECT_LT(sent_on, pairs * 9 / 10) << sent_on << " of " << pairs;
+  }
+}
+
+// Half extents down to 1e-40 m (float underflows), centres past the filter's 2^60 m range (that
+// batch, or that query, goes to the double kernel whole), and a query whose frame is too far from
+// orthonormal for the A-frame gaps (the filter turns itself off).
+TEST(Obb3Batch, TinyHugeSkewedAndOutOfRangeBoxesMatchScalar) {
+  testing::BatchPathGuard guard;
+  std::mt19937_64 rng(0x3f17e7);
+  const Eigen::Quaterniond q = test3::randomRotation(rng);
+  const Obb3 small_a = Obb3::fromQuaternion({3.0, -1.0, 2.0}, q, {2e-40, 6e-41, 1e-40});
+  const Obb3 far_a = Obb3::fromQuaternion({1e25, -2e24, 3e24}, q, {2.0, 1.0, 1.0});
+  const Obb3 plain_a = Obb3::fromQuaternion({0.5, 0.25, -0.5}, q, {4.0, 2.0, 1.5});
+  const Obb3 skewed_a = [&plain_a] {
+    Obb3 b = plain_a;
+    Eigen::Matrix3d skew = plain_a.rotation();
+    skew(0, 1) += 1e-8;  // a frame defect of about 1e-8, beyond the filter's 2^-30
+    b.setRotation(skew);
+    return b;
+  }();
+  std::vector<Obb3> tiny{
+      small_a,
+      Obb3::fromQuaternion({3.0, -1.0, 2.0}, test3::randomRotation(rng), {4e-40, 2e-45, 1e-40}),
+      Obb3::fromQuaternion({3.0 + 1e-39, -1.0, 2.0}, q, {2e-40, 2e-40, 2e-40})};
+  for (int i = 0; i < 40; ++i) {
+    tiny.push_back(test3::randomBoxAt(rng, plain_a.center + test3::randomOffset(rng, 0.0, 6.0)));
+  }
+  std::vector<Obb3> huge = tiny;
+  huge.push_back(Obb3::fromQuaternion({1e25, -2e24, 3e24}, q, {3.0, 1.0, 1.0}));
+  const Obb3Batch tiny_batch(tiny), huge_batch(huge);
+  EXPECT_TRUE(tiny_batch.filterUsable());
+  EXPECT_FALSE(huge_batch.filterUsable());
+  for (const Obb3* a : {&small_a, &far_a, &plain_a, &skewed_a}) {
+    for (const auto* batch : {&tiny, &huge}) {
+      const Obb3Batch& many = batch == &tiny ? tiny_batch : huge_batch;
+      std::size_t pairs = 0;
+      const std::size_t sent_on = expectScalarVerdicts(*a, *batch, many, pairs, "extreme");
+      if (a == &far_a || a == &skewed_a || batch == &huge) {
+        EXPECT_EQ(sent_on, pairs) << "the filter cannot run here, so every pair goes on";
+      }
+    }
+  }
+}
+
 // Crossed beams near-parallel to 1e-15 rad far from the origin: only an edge axis separates them.
 TEST(Obb3Batch, CrossedBeamsSeparatedByAnEdgeAxisOnEveryPath) {
   testing::BatchPathGuard guard;

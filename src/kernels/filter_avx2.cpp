@@ -1,5 +1,5 @@
-// The 2D boolean batch SAT with the float pre-filter, eight pairs per AVX2 instruction; undecided
-// lane groups go to the AVX2 double kernel (batch_avx2.cpp). Built with -mavx2 -mfma
+// The 2D and 3D boolean batch SATs with their float pre-filters, eight pairs per AVX2 instruction;
+// undecided lane groups go to the AVX2 double kernels (batch_avx2.cpp). Built with -mavx2 -mfma
 // (CMakeLists.txt) and called only after batchPathAvailable says the CPU has both.
 //
 // Includes nothing but the intrinsics and the kernel header, for the reason given in
@@ -7,12 +7,13 @@
 
 #if defined(CARDEMO_BATCH_AVX2)
 #if !defined(__AVX2__) || !defined(__FMA__)
-#error "batch2_avx2.cpp needs -mavx2 -mfma (set in CMakeLists.txt)"
+#error "filter_avx2.cpp needs -mavx2 -mfma (set in CMakeLists.txt)"
 #endif
 
 #include <immintrin.h>
 
 #include "kernels/batch2_filter.hpp"
+#include "kernels/batch3_filter.hpp"
 
 namespace cardemo::batch_detail {
 namespace {
@@ -60,6 +61,38 @@ std::size_t overlap2FilteredAvx2(const Box2One& a, const Box2Arrays& b, const Bo
   return runFilteredOverlap2<Float8>(fa, fb, first, last, hit, [&](std::size_t i0, std::size_t i1) {
     overlap2Avx2(a, b, i0, i1, hit);
   });
+}
+
+std::size_t overlap3FilteredAvx2(const Box3One& a, const Box3Arrays& b, const Box3FilterOne& fa,
+                                 const Box3FilterArrays& fb, std::size_t first, std::size_t last,
+                                 std::uint8_t* hit) {
+  return runFilteredOverlap3<Float8>(
+      fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
+        // The open boxes, four at a time, copied into one lane group (the last box repeated to
+        // fill it) and decided by the double kernel.
+        alignas(32) double fields[15][4];
+        const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
+                                    b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
+        const Box3Arrays group{fields[0],
+                               fields[1],
+                               fields[2],
+                               {fields[3], fields[4], fields[5], fields[6], fields[7], fields[8],
+                                fields[9], fields[10], fields[11]},
+                               fields[12],
+                               fields[13],
+                               fields[14]};
+        for (std::size_t k = 0; k < count; k += 4) {
+          const std::size_t lanes = count - k < 4 ? count - k : 4;
+          for (std::size_t f = 0; f < 15; ++f) {
+            for (std::size_t l = 0; l < 4; ++l) {
+              fields[f][l] = source[f][boxes[k + (l < lanes ? l : lanes - 1)]];
+            }
+          }
+          std::uint8_t group_hit[4];
+          overlap3Avx2(a, group, 0, 4, group_hit);
+          for (std::size_t l = 0; l < lanes; ++l) hit[boxes[k + l]] = group_hit[l];
+        }
+      });
 }
 
 }  // namespace cardemo::batch_detail

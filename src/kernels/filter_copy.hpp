@@ -1,0 +1,29 @@
+#pragma once
+/// Internal to the batch kernels: what the 2D and 3D batches share when they build the float copy
+/// that their pre-filters read (batch2_filter.hpp, batch3_filter.hpp).
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace cardemo::batch_detail {
+
+/// The float pre-filters' range: centres within 2^60 m of the batch's reference point and half
+/// extents up to 2^60 m keep every float operation far from overflow.
+inline constexpr double kFilterRange = 0x1p60;
+/// The float copies are padded to whole lane groups of the widest float path (AVX-512F: sixteen).
+inline constexpr std::size_t kFilterGroup = 16;
+
+/// True when |x| is within kFilterRange (false for NaN).
+inline bool inFilterRange(double x) {
+  return std::abs(x) <= kFilterRange;
+}
+
+/// The smallest float >= x (x finite, within float range).
+inline float roundUp(double x) {
+  float r = static_cast<float>(x);
+  if (static_cast<double>(r) < x) r = std::nextafter(r, std::numeric_limits<float>::infinity());
+  return r;
+}
+
+}  // namespace cardemo::batch_detail

@@ -1,0 +1,111 @@
+#pragma once
+/// Internal to the batch kernels: the loops that run the float pre-filters of the 2D and 3D boolean
+/// SATs (batch2_filter.hpp, batch3_filter.hpp). They write every verdict the filter decides and
+/// hand the undecided boxes to the double kernel: the whole lane group for the cheap 2D kernel,
+/// the undecided boxes alone for the costly 3D one.
+//
+// Included by the filter headers only; everything here has internal linkage.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace cardemo::batch_detail {
+namespace {
+
+// Lane bits of a filter's verdict on one lane group.
+struct FilterVerdict {
+  unsigned separated;  // decided: separated on some axis
+  unsigned decided;    // separated or overlapping for certain
+};
+
+// kHitBytes[m] holds eight hit bytes, byte k = 1 - bit k of m: one load per lane mask.
+struct HitByteTable {
+  std::uint64_t bytes[256];
+  constexpr HitByteTable() : bytes{} {
+    for (unsigned m = 0; m < 256; ++m) {
+      for (unsigned k = 0; k < 8; ++k) {
+        if (((m >> k) & 1u) == 0) bytes[m] |= std::uint64_t{1} << (8 * k);
+      }
+    }
+  }
+};
+inline constexpr HitByteTable kHitBytes;
+
+// Eight hit bytes, hit[k] = 1 - bit k of `separated`.
+[[gnu::always_inline]] inline std::uint64_t hitBytes(unsigned separated) {
+  return kHitBytes.bytes[separated & 0xFFu];
+}
+
+// Runs `filter(i)` (the verdicts of the lane group starting at box i; the float arrays hold whole
+// lane groups, padded) over [first, last), writes every decided verdict and calls `exact(i0, i1)`
+// (the double kernel, which rewrites hit[i0, i1)) for each lane group with an undecided lane.
+// Returns the number of undecided boxes.
+template <std::size_t kWidth, class Filter, class Exact>
+std::size_t runFiltered(std::size_t first, std::size_t last, std::uint8_t* hit,
+                        const Filter& filter, const Exact& exact) {
+  std::size_t undecided = 0;
+  std::size_t i = first;
+  for (; i + kWidth <= last; i += kWidth) {
+    const FilterVerdict v = filter(i);
+    for (std::size_t k = 0; k < kWidth; k += 8) {
+      const std::uint64_t bytes = hitBytes(v.separated >> k);
+      __builtin_memcpy(hit + i + k, &bytes, 8);
+    }
+    const unsigned open = ~v.decided & ((1u << kWidth) - 1u);
+    if (open != 0) [[unlikely]] {
+      exact(i, i + kWidth);
+      undecided += static_cast<std::size_t>(__builtin_popcount(open));
+    }
+  }
+  if (i == last) return undecided;
+  // The tail: a whole group computed on the padding, the live lanes written.
+  const std::size_t lanes = last - i;
+  const FilterVerdict v = filter(i);
+  for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
+  const unsigned open = ~v.decided & ((1u << lanes) - 1u);
+  if (open != 0) {
+    exact(i, last);
+    undecided += static_cast<std::size_t>(__builtin_popcount(open));
+  }
+  return undecided;
+}
+
+// As runFiltered, but the undecided boxes go on one by one: their indices are gathered, and
+// `exact_boxes(indices, count)` (the double kernel on those boxes alone, writing hit[indices[k]])
+// runs once a buffer of them has filled, and at the end. For a double kernel too costly to run on
+// a whole lane group for one undecided lane.
+template <std::size_t kWidth, class Filter, class ExactBoxes>
+std::size_t runFilteredByBox(std::size_t first, std::size_t last, std::uint8_t* hit,
+                             const Filter& filter, const ExactBoxes& exact_boxes) {
+  constexpr std::size_t kPending = 64;
+  std::size_t pending[kPending + kWidth];
+  std::size_t count = 0, undecided = 0;
+  for (std::size_t i = first; i < last; i += kWidth) {
+    const std::size_t lanes = last - i < kWidth ? last - i : kWidth;
+    const FilterVerdict v = filter(i);
+    if (lanes == kWidth) {
+      for (std::size_t k = 0; k < kWidth; k += 8) {
+        const std::uint64_t bytes = hitBytes(v.separated >> k);
+        __builtin_memcpy(hit + i + k, &bytes, 8);
+      }
+    } else {  // the tail: a whole group computed on the padding, the live lanes written
+      for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
+    }
+    unsigned open = ~v.decided & ((1u << lanes) - 1u);
+    if (open == 0) [[likely]]
+      continue;
+    undecided += static_cast<std::size_t>(__builtin_popcount(open));
+    for (; open != 0; open &= open - 1) {
+      pending[count++] = i + static_cast<std::size_t>(__builtin_ctz(open));
+    }
+    if (count >= kPending) {
+      exact_boxes(pending, count);
+      count = 0;
+    }
+  }
+  if (count > 0) exact_boxes(pending, count);
+  return undecided;
+}
+
+}  // namespace
+}  // namespace cardemo::batch_detail
