@@ -3,7 +3,7 @@
 /// float lane type (eight floats with AVX2) as the 2D one is (batch2_filter.hpp, whose lane type
 /// interface it uses). It decides, in float, every pair whose largest separating-axis gap clears a
 /// rigorous error bound, and hands the rest to the double kernel, so every verdict equals that of
-/// the accurate kernel (and of overlapObb3).
+/// the accurate kernel, bit for bit the portable path's.
 //
 // Included by filter_avx2.cpp only; everything here has internal linkage.
 //
