@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "geometry/angle.hpp"
 #include "geometry/obb3.hpp"
@@ -168,6 +169,26 @@ std::size_t blocksOf(const std::vector<LotCarWithId>& cars) {
   return cars.empty() ? 1 : cars.back().block + 1;
 }
 
+// Slides every tenth box of a one-against-many set along the SAT normal to a signed gap within
+// 1e-5 m of touching, as resting and grazing contacts are in the game (the float pre-filters send
+// these on), and sets the set's overlap share. `query(a, b)` returns the pair's SAT result and
+// its boolean verdict.
+template <class Set, class Query>
+void placeTenthNearTouching(Set& set, std::uint64_t seed, const Query& query) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> gap(-1e-5, 1e-5);
+  std::size_t hits = 0;
+  const std::size_t n = set.b.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i % 10 == 0) {
+      const auto s = query(set.a[0], set.b[i]).first;
+      set.b[i].center += (gap(rng) - s.separation) * s.normal;
+    }
+    hits += query(set.a[0], set.b[i]).second ? 1 : 0;
+  }
+  set.overlap_share = n > 0 ? static_cast<double>(hits) / static_cast<double>(n) : 0.0;
+}
+
 }  // namespace
 
 const PairSet2& pairSet2(std::size_t n) {
@@ -179,19 +200,9 @@ const PairSet2& batchSet2(std::size_t n) {
   static std::map<std::size_t, std::unique_ptr<PairSet2>> cache;
   return cached(cache, n, [n] {
     PairSet2 set = makePairs2(n, 2000 + n, reach2(), true, spreadQuery2);
-    // Every tenth box slid along the SAT normal to a signed gap within 1e-5 m of touching, as
-    // resting and grazing contacts are in the game: the float pre-filters send these on.
-    std::mt19937_64 rng(5000 + n);
-    std::uniform_real_distribution<double> gap(-1e-5, 1e-5);
-    std::size_t hits = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i % 10 == 0) {
-        const SatResult2 s = collideObb2(set.a[0], set.b[i]);
-        set.b[i].center += (gap(rng) - s.separation) * s.normal;
-      }
-      hits += overlapObb2(set.a[0], set.b[i]) ? 1 : 0;
-    }
-    set.overlap_share = n > 0 ? static_cast<double>(hits) / static_cast<double>(n) : 0.0;
+    placeTenthNearTouching(set, 5000 + n, [](const Obb2& a, const Obb2& b) {
+      return std::pair{collideObb2(a, b), overlapObb2(a, b)};
+    });
     return set;
   });
 }
@@ -205,19 +216,9 @@ const PairSet3& batchSet3(std::size_t n) {
   static std::map<std::size_t, std::unique_ptr<PairSet3>> cache;
   return cached(cache, n, [n] {
     PairSet3 set = makePairs3(n, 4000 + n, reach3(), true, spreadQuery3);
-    // As batchSet2: every tenth box slid along the SAT normal to a signed gap within 1e-5 m of
-    // touching, which the 3D float pre-filter sends on.
-    std::mt19937_64 rng(6000 + n);
-    std::uniform_real_distribution<double> gap(-1e-5, 1e-5);
-    std::size_t hits = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i % 10 == 0) {
-        const SatResult3 s = collideObb3(set.a[0], set.b[i]);
-        set.b[i].center += (gap(rng) - s.separation) * s.normal;
-      }
-      hits += overlapObb3(set.a[0], set.b[i]) ? 1 : 0;
-    }
-    set.overlap_share = n > 0 ? static_cast<double>(hits) / static_cast<double>(n) : 0.0;
+    placeTenthNearTouching(set, 6000 + n, [](const Obb3& a, const Obb3& b) {
+      return std::pair{collideObb3(a, b), overlapObb3(a, b)};
+    });
     return set;
   });
 }

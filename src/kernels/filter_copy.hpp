@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 
 namespace cardemo::batch_detail {
 
@@ -24,6 +25,19 @@ inline float roundUp(double x) {
   float r = static_cast<float>(x);
   if (static_cast<double>(r) < x) r = std::nextafter(r, std::numeric_limits<float>::infinity());
   return r;
+}
+
+/// The point a batch's float centres are taken relative to: the middle of the centres' bounds, so
+/// that the rounding to float is relative to the batch's spread, not to the distance from the
+/// origin (the difference is taken in double). `boxes` is not empty; Box has an Eigen `center`.
+template <class Box>
+auto filterReferenceOf(std::span<const Box> boxes) {
+  auto lo = boxes[0].center, hi = boxes[0].center;
+  for (const Box& b : boxes) {
+    lo = lo.cwiseMin(b.center);
+    hi = hi.cwiseMax(b.center);
+  }
+  return decltype(lo)(0.5 * lo + 0.5 * hi);
 }
 
 }  // namespace cardemo::batch_detail

@@ -42,15 +42,7 @@ Obb3Batch::Obb3Batch(std::span<const Obb3> boxes) {
   }
   if (boxes.empty()) return;
 
-  // The float copy: centres relative to the middle of the centres' bounds (the difference taken
-  // in double), so the rounding to float is relative to the batch's spread, not to the distance
-  // from the origin.
-  Eigen::Vector3d lo = boxes[0].center, hi = boxes[0].center;
-  for (const Obb3& b : boxes) {
-    lo = lo.cwiseMin(b.center);
-    hi = hi.cwiseMax(b.center);
-  }
-  reference_ = 0.5 * lo + 0.5 * hi;
+  reference_ = batch_detail::filterReferenceOf(boxes);
   filter_usable_ = true;
   const std::size_t padded = (boxes.size() + kFilterGroup - 1) / kFilterGroup * kFilterGroup;
   for (std::size_t i = 0; i < padded && filter_usable_; ++i) {
