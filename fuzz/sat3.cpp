@@ -1,20 +1,28 @@
 // Fuzz target: the 3D separating-axis routines (collideObb3, overlapObb3) against the exact GMP
-// oracle (src/compare/exact), in both argument orders.
+// oracle (src/compare/exact), in both argument orders, and the batch kernels (overlapObb3Batch,
+// separationObb3Batch) on the same pair on every batch path.
 //
 // Input: byte 0 picks the domain (bit 7: "wild"); then A's centre, rotation and size, B's rotation
 // (often nearly or exactly parallel to A's) and size, and B's placement (shapes3.hpp).
 // In the contract's domain a wrong answer aborts: `hit` wrong while |exact sep| > 1e-6 m, `sep`
 // more than 2e-6 m from the exact value, a normal that is not unit or does not realise `sep` from
-// A towards B, `hit` not equal to `sep <= 0`, or NaN/inf. Outside it: no NaN/inf, no crash.
+// A towards B, `hit` not equal to `sep <= 0`, or NaN/inf; for the batch kernels, a path whose hit
+// or separation differs from the portable path's in any bit (the SIMD paths put a float
+// pre-filter before the boolean kernel), or a hit not equal to its separation's `sep <= 0`.
+// Outside it: no NaN/inf, no crash.
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "compare/exact/exact_sat.hpp"
 #include "fuzz_check.hpp"
+#include "geometry/batch_path.hpp"
+#include "kernels/obb3_batch.hpp"
 #include "shapes3.hpp"
 
 namespace cardemo::fuzz {
@@ -57,6 +65,47 @@ void requireAccurate(const Obb3& a, const Obb3& b, const SatResult3& r,
               ")" + why);
 }
 
+// The batch kernels on B alone and on B among shifted copies (so that its lane group holds other
+// pairs), on every path this CPU has, against the portable path's bits.
+void requireBatchAgrees(const Obb3& a, const Obb3& b, bool checked) {
+  std::vector<Obb3> boxes{b};
+  for (const double shift : {1e-7, -1e-4, 3.0}) {
+    Obb3 c = b;
+    c.center.x() += shift;
+    boxes.push_back(c);
+  }
+  const Obb3Batch many(boxes);
+  const BatchPath saved = batchPath();
+  std::vector<std::uint8_t> first_hit;
+  std::vector<double> first_sep;
+  for (const BatchPath path : {BatchPath::kPortable, BatchPath::kAvx2, BatchPath::kAvx512}) {
+    if (!batchPathAvailable(path)) continue;
+    setBatchPath(path);
+    std::vector<std::uint8_t> hit(boxes.size(), 7);
+    std::vector<double> sep(boxes.size());
+    static_cast<void>(overlapObb3Batch(a, many, hit));
+    separationObb3Batch(a, many, sep);
+    if (!checked) continue;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const std::string where = std::string(" on the ") + batchPathName(path) + " path, box " +
+                                std::to_string(i) + "\n  A: " + describe(a) +
+                                "\n  B: " + describe(boxes[i]);
+      require(std::isfinite(sep[i]), "batch separation is not finite" + where);
+      require(hit[i] == (sep[i] <= 0.0 ? 1 : 0), "batch hit disagrees with batch sep" + where);
+      if (!first_hit.empty()) {
+        require(hit[i] == first_hit[i], "batch hit differs from the portable path's" + where);
+        require(std::bit_cast<std::uint64_t>(sep[i]) == std::bit_cast<std::uint64_t>(first_sep[i]),
+                "batch sep differs from the portable path's" + where);
+      }
+    }
+    if (first_hit.empty()) {
+      first_hit = hit;
+      first_sep = sep;
+    }
+  }
+  setBatchPath(saved);
+}
+
 }  // namespace
 }  // namespace cardemo::fuzz
 
@@ -78,6 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   requireFinite(b, a, ba);
   static_cast<void>(overlapObb3(a, b));
   static_cast<void>(overlapObb3(b, a));
+  requireBatchAgrees(a, b, !wild);
   if (wild) return 0;
   const exact::ExactResult ex = exact::collideObb3(a, b);
   requireAccurate(a, b, ab, ex);
