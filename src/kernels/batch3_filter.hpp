@@ -19,8 +19,9 @@
 // to within phi <= 2^-30 (setFilter in obb3_batch.cpp turns the filter off beyond):
 //   |d^ - d|_1 <= u D + 1.01 P;  |t^_i - t_i| <= 4.1 u D + 1.02 P;  |R^_ij - R_ij| <= 4.1 u
 // (|t|_2 <= D, sum_k |a_ik| |b_jk| <= 1 + 2 phi). The gaps then follow: A's faces within
-// 9.2 u S + 1.02 P, B's faces (s_j = sum_i t_i R_ij first, sum_i |R_ij| <= 1.74) within
-// 20.5 u S + 1.78 P, the edges within 24.6 u S + 2.04 P. The exact A-frame gap is within
+// 9.2 u S + 1.02 P, B's faces (s_j = sum_i t_i R_ij, which is d . b_j up to 3 phi D since
+// A A^T = I up to 3 phi; sum_i |R_ij| <= 1.74) within 20.7 u S + 1.78 P, the edges within
+// 24.6 u S + 2.04 P. The exact A-frame gap is within
 // (26 * 2^-53 + 2 phi) S < u S / 8 of the accurate kernel's (architecture.md, "The 3D filter"),
 // and the accurate face gaps within 10 * 2^-53 S of theirs. So every float gap is within
 // E = 24.8 u S + 2.04 P of the accurate kernel's gap on the same axis (0 on an edge axis the
