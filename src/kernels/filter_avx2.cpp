@@ -1,5 +1,6 @@
 // The 2D and 3D boolean batch SATs with their float pre-filters, eight pairs per AVX2 instruction;
-// undecided lane groups go to the AVX2 double kernels (batch_avx2.cpp). Built with -mavx2 -mfma
+// the pairs they leave undecided go to the AVX2 double kernels (batch_avx2.cpp): with their lane
+// group in 2D, one by one in 3D (filter_run.hpp). Built with -mavx2 -mfma
 // (CMakeLists.txt) and called only after batchPathAvailable says the CPU has both.
 //
 // Includes nothing but the intrinsics and the kernel header, for the reason given in
