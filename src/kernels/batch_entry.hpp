@@ -115,9 +115,9 @@ void overlap3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, st
                     std::uint8_t* hit);
 void separation3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
                        double* separation);
-// 3D with the float pre-filter (batch3_filter.hpp), eight pairs per instruction; lane groups it
-// leaves undecided go to overlap3Avx2. Same verdicts as overlap3*, bit for bit. Returns how many
-// boxes the filter left undecided.
+// 3D with the float pre-filter (batch3_filter.hpp), eight pairs per instruction; the boxes it
+// leaves undecided go, copied four at a time into a lane group, to overlap3Avx2. Same verdicts as
+// overlap3*, bit for bit. Returns how many boxes the filter left undecided.
 std::size_t overlap3FilteredAvx2(const Box3One& a, const Box3Arrays& b, const Box3FilterOne& fa,
                                  const Box3FilterArrays& fb, std::size_t first, std::size_t last,
                                  std::uint8_t* hit);
