@@ -36,37 +36,42 @@ inline constexpr HitByteTable kHitBytes;
   return kHitBytes.bytes[separated & 0xFFu];
 }
 
-// Runs `filter(i)` (the verdicts of the lane group starting at box i; the float arrays hold whole
-// lane groups, padded) over [first, last), writes every decided verdict and calls `exact(i0, i1)`
-// (the double kernel, which rewrites hit[i0, i1)) for each lane group with an undecided lane.
-// Returns the number of undecided boxes.
-template <std::size_t kWidth, class Filter, class Exact>
-std::size_t runFiltered(std::size_t first, std::size_t last, std::uint8_t* hit,
-                        const Filter& filter, const Exact& exact) {
-  std::size_t undecided = 0;
-  std::size_t i = first;
-  for (; i + kWidth <= last; i += kWidth) {
-    const FilterVerdict v = filter(i);
+// Writes the hit bytes of the `lanes` live boxes of the lane group at box i (a whole group with
+// one table load per eight lanes, the tail lane by lane) and returns the mask of its undecided
+// lanes.
+template <std::size_t kWidth>
+[[gnu::always_inline]] inline unsigned writeVerdicts(const FilterVerdict& v, std::uint8_t* hit,
+                                                     std::size_t i, std::size_t lanes) {
+  if (lanes == kWidth) [[likely]] {
     for (std::size_t k = 0; k < kWidth; k += 8) {
       const std::uint64_t bytes = hitBytes(v.separated >> k);
       __builtin_memcpy(hit + i + k, &bytes, 8);
     }
-    const unsigned open = ~v.decided & ((1u << kWidth) - 1u);
+  } else {
+    for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
+  }
+  return ~v.decided & ((1u << lanes) - 1u);
+}
+
+// Runs `filter(i)` (the verdicts of the lane group starting at box i; the float arrays hold whole
+// lane groups, padded, so the tail is a whole group computed on the padding) over [first, last),
+// writes every decided verdict and calls `exact(i0, i1)` (the double kernel, which rewrites
+// hit[i0, i1)) for each lane group with an undecided lane. Returns the number of undecided boxes.
+template <std::size_t kWidth, class Filter, class Exact>
+std::size_t runFiltered(std::size_t first, std::size_t last, std::uint8_t* hit,
+                        const Filter& filter, const Exact& exact) {
+  std::size_t undecided = 0;
+  const auto group = [&](std::size_t i, std::size_t lanes) {
+    const unsigned open = writeVerdicts<kWidth>(filter(i), hit, i, lanes);
     if (open != 0) [[unlikely]] {
-      exact(i, i + kWidth);
+      exact(i, i + lanes);
       undecided += static_cast<std::size_t>(__builtin_popcount(open));
     }
-  }
-  if (i == last) return undecided;
-  // The tail: a whole group computed on the padding, the live lanes written.
-  const std::size_t lanes = last - i;
-  const FilterVerdict v = filter(i);
-  for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
-  const unsigned open = ~v.decided & ((1u << lanes) - 1u);
-  if (open != 0) {
-    exact(i, last);
-    undecided += static_cast<std::size_t>(__builtin_popcount(open));
-  }
+  };
+  // Whole groups with the lane count fixed, so that the loop carries no tail test.
+  std::size_t i = first;
+  for (; i + kWidth <= last; i += kWidth) group(i, kWidth);
+  if (i < last) group(i, last - i);
   return undecided;
 }
 
@@ -82,16 +87,7 @@ std::size_t runFilteredByBox(std::size_t first, std::size_t last, std::uint8_t* 
   std::size_t count = 0, undecided = 0;
   for (std::size_t i = first; i < last; i += kWidth) {
     const std::size_t lanes = last - i < kWidth ? last - i : kWidth;
-    const FilterVerdict v = filter(i);
-    if (lanes == kWidth) {
-      for (std::size_t k = 0; k < kWidth; k += 8) {
-        const std::uint64_t bytes = hitBytes(v.separated >> k);
-        __builtin_memcpy(hit + i + k, &bytes, 8);
-      }
-    } else {  // the tail: a whole group computed on the padding, the live lanes written
-      for (std::size_t k = 0; k < lanes; ++k) hit[i + k] = ((v.separated >> k) & 1u) != 0 ? 0 : 1;
-    }
-    unsigned open = ~v.decided & ((1u << lanes) - 1u);
+    unsigned open = writeVerdicts<kWidth>(filter(i), hit, i, lanes);
     if (open == 0) [[likely]]
       continue;
     undecided += static_cast<std::size_t>(__builtin_popcount(open));

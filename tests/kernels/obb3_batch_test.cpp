@@ -290,7 +290,7 @@ TEST(Obb3Batch, FloatFilterDecidesAlmostEveryRandomPair) {
     ASSERT_TRUE(many.filterUsable());
     sent_on += expectDoubleKernelVerdicts(a, boxes, many, pairs, "random");
   }
-  // Only pairs within about 1e-4 m of touching (or whose lane group holds one) go on.
+  // Only pairs within about 1e-4 m of touching go on (one by one, not with their lane group).
   if (pairs > 0) {
     EXPECT_LE(sent_on * 50, pairs) << sent_on << " of " << pairs;
   }
