@@ -99,14 +99,15 @@ void registerLayout(bool random, std::size_t n) {
       ("broad/query/" + prefix + "cardemo").c_str(), [random, n](benchmark::State& s) {
         const Lot& l = lot(random, n);
         const UniformGrid& g = grid(random, n);
-        std::vector<std::uint32_t> out;
+        // QueryIds, as World::step queries the grid.
+        QueryIds out;
         out.reserve(4096);
         std::size_t step = 0, found = 0;
         for (auto _ : s) {
           g.query(l.path[step], out);
           found += out.size();
           step = (step + 1) % l.path.size();
-          benchmark::DoNotOptimize(out.data());
+          benchmark::DoNotOptimize(out.begin());
         }
         s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()));
         s.counters["candidates"] = static_cast<double>(found) /

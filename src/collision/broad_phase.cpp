@@ -228,26 +228,47 @@ void UniformGrid::refreshViews() {
   }
 }
 
-void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) const {
+std::size_t UniformGrid::queryFew(const Aabb2& query, std::uint32_t* few) const {
 #if defined(CARDEMO_BATCH_AVX2)
   if (large_boxes_.empty() && batchPath() != BatchPath::kPortable) {
-    // The common case: a handful of ids, found and sorted in registers (an empty grid has no
-    // levels, and a query off every level's bounds or NaN finds nothing). They are handed over
-    // as a fixed eight, with no branch on how many, then cut to the count.
-    std::array<std::uint32_t, grid_detail::kFewIds> few;
+    // A handful of ids, found and sorted in registers (an empty grid has no levels, and a query off
+    // every level's bounds or NaN finds nothing).
     const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
-    const std::size_t count =
-        grid_detail::scanFewAvx2(views_.data(), views_.size(), box, few.data());
-    if (count <= few.size()) [[likely]] {
-      out.clear();
-      out.resize(few.size());
-      std::memcpy(out.data(), few.data(), sizeof few);
-      out.resize(count);
-      return;
-    }
+    return grid_detail::scanFewAvx2(views_.data(), views_.size(), box, few);
   }
+#else
+  (void)query;
+  (void)few;
 #endif
+  return grid_detail::kFewIds + 1;
+}
+
+void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) const {
+  std::array<std::uint32_t, grid_detail::kFewIds> few;
+  const std::size_t count = queryFew(query, few.data());
+  if (count <= few.size()) [[likely]] {
+    // Handed over as a fixed eight, with no branch on how many, then cut to the count.
+    out.clear();
+    out.resize(few.size());
+    std::memcpy(out.data(), few.data(), sizeof few);
+    out.resize(count);
+    return;
+  }
   queryBuffered(query, out);
+}
+
+void UniformGrid::query(const Aabb2& query, QueryIds& out) const {
+  std::vector<std::uint32_t>& storage = out.storage_;
+  if (storage.size() < grid_detail::kFewIds) [[unlikely]] {
+    storage.resize(grid_detail::kFewIds);
+  }
+  const std::size_t count = queryFew(query, storage.data());
+  if (count <= grid_detail::kFewIds) [[likely]] {
+    out.count_ = count;
+    return;
+  }
+  queryBuffered(query, storage);
+  out.count_ = storage.size();
 }
 
 void UniformGrid::queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const {

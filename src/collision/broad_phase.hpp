@@ -10,6 +10,38 @@
 
 namespace cardemo {
 
+/// The ids a UniformGrid query found, in increasing order, in storage that the next query reuses
+/// (no allocation once it has grown to its peak). What the game's step uses: the grid writes the
+/// common handful of ids straight into it, with none of std::vector's bookkeeping.
+class QueryIds {
+ public:
+  /// The ids, in increasing order.
+  [[nodiscard]] std::span<const std::uint32_t> ids() const { return {storage_.data(), count_}; }
+  /// Number of ids.
+  [[nodiscard]] std::size_t size() const { return count_; }
+  /// True when the query found nothing.
+  [[nodiscard]] bool empty() const { return count_ == 0; }
+  /// First id (for range for).
+  [[nodiscard]] const std::uint32_t* begin() const { return storage_.data(); }
+  /// Past the last id.
+  [[nodiscard]] const std::uint32_t* end() const { return storage_.data() + count_; }
+  /// Id k, k < size().
+  [[nodiscard]] std::uint32_t operator[](std::size_t k) const { return storage_[k]; }
+  /// Makes room for `n` ids ahead of time (and for the fast path's fixed block, so that no
+  /// query allocates until one finds more than `n`).
+  void reserve(std::size_t n) {
+    storage_.reserve(n > grid_detail::kFewIds ? n : grid_detail::kFewIds);
+    if (storage_.size() < grid_detail::kFewIds) storage_.resize(grid_detail::kFewIds);
+  }
+
+ private:
+  friend class UniformGrid;
+  // storage_[0, count_) are the ids; storage_ never shrinks, so once it holds the fast path's
+  // fixed block of ids a query writes them without a size change.
+  std::vector<std::uint32_t> storage_;
+  std::size_t count_ = 0;
+};
+
 /// Uniform grids in compressed-sparse-row form over static boxes, one grid per size class. Each
 /// box is stored once, in the cell that holds its lower-left corner, and the cells of a row are
 /// contiguous, so a query scans one contiguous run of boxes per occupied row of cells it reaches,
@@ -36,6 +68,8 @@ class UniformGrid {
   /// Appends to `out` (after clearing it) the ids of every box that touches or overlaps `query`,
   /// each once, in increasing id order. Does not allocate once `out` has grown to its peak size.
   void query(const Aabb2& query, std::vector<std::uint32_t>& out) const;
+  /// The same ids into `out`: the cheaper form (no std::vector size bookkeeping per query).
+  void query(const Aabb2& query, QueryIds& out) const;
 
   /// Number of items the grid was built over.
   [[nodiscard]] std::size_t size() const { return size_; }
@@ -67,6 +101,10 @@ class UniformGrid {
   std::vector<Aabb2> large_boxes_;  // items too big for any level: tested by every query
   std::vector<std::uint32_t> large_ids_;
 
+  // The common case with AVX2: writes kFewIds slots at `few` (the ids found first, in increasing
+  // order) and returns how many were found, or more than kFewIds when they did not fit (`few` is
+  // then unspecified); none when the path does not apply (oversized items, or no AVX2).
+  [[nodiscard]] std::size_t queryFew(const Aabb2& query, std::uint32_t* few) const;
   // The query when scanFewAvx2 is not used or finds more than it keeps: the scan stores ids to a
   // buffer, which is then sorted.
   void queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const;
@@ -82,6 +120,8 @@ class BruteForceBroadPhase {
       : boxes_(boxes.begin(), boxes.end()) {}
   /// Same contract as UniformGrid::query.
   void query(const Aabb2& query, std::vector<std::uint32_t>& out) const;
+  /// The same ids into `out`: the cheaper form (no std::vector size bookkeeping per query).
+  void query(const Aabb2& query, QueryIds& out) const;
 
  private:
   std::vector<Aabb2> boxes_;

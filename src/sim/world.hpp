@@ -173,7 +173,7 @@ class World {
   // (in id order). A query box inside it is answered from cover_ (gatherCandidates).
   Aabb2 cover_box_;
   bool have_cover_ = false;
-  std::vector<std::uint32_t> cover_;
+  QueryIds cover_;
   WorldStats stats_;
 
   // Per-step scratch (reserved once, so step() does not allocate when warm).

@@ -88,6 +88,9 @@ void expectTwins(const std::vector<Aabb2>& scene, const std::vector<Aabb2>& quer
   const UniformGrid grid(scene);
   const BruteForceBroadPhase brute(scene);
   std::vector<std::uint32_t> got, want;
+  // One QueryIds across every query, so that crowded queries (the buffered scan) and the few-ids
+  // path follow each other in the same storage.
+  QueryIds ids;
   testing::BatchPathGuard guard;
   for (const BatchPath path : testing::availableBatchPaths()) {
     setBatchPath(path);
@@ -97,6 +100,12 @@ void expectTwins(const std::vector<Aabb2>& scene, const std::vector<Aabb2>& quer
       ASSERT_EQ(got, want) << what << " on " << batchPathName(path) << ": query " << q << " ["
                            << queries[q].min.transpose() << "] - [" << queries[q].max.transpose()
                            << "]";
+      grid.query(queries[q], ids);
+      ASSERT_EQ(std::vector<std::uint32_t>(ids.begin(), ids.end()), want)
+          << what << " on " << batchPathName(path) << ", QueryIds: query " << q;
+      ASSERT_EQ(ids.size(), want.size());
+      ASSERT_EQ(ids.empty(), want.empty());
+      ASSERT_EQ(ids.ids().size(), want.size());
     }
   }
 }
@@ -351,6 +360,47 @@ TEST(BroadPhase, QueryDoesNotReallocateOnceWarm) {
   const std::uint32_t* data = out.data();
   for (int q = 0; q < 1000; ++q) grid.query(randomQuery(scene, rng), out);
   EXPECT_EQ(out.data(), data);
+
+  QueryIds ids;
+  ids.reserve(scene.size());
+  const std::uint32_t* ids_data = ids.begin();
+  std::size_t crowded = 0;
+  for (int q = 0; q < 1000; ++q) {
+    // Every 50th query finds every box: the buffered scan, at the reserved size.
+    grid.query(q % 50 == 0 ? box(-1e12, -1e12, 1e12, 1e12) : randomQuery(scene, rng), ids);
+    crowded += ids.size() > grid_detail::kFewIds ? 1 : 0;
+  }
+  EXPECT_EQ(ids.begin(), ids_data);
+  EXPECT_GT(crowded, 0u) << "some queries must take the buffered scan";
+}
+
+TEST(BroadPhase, QueryIdsKeepTheirStorageFromCrowdedToFewIds) {
+  // A crowded query (more ids than the register path keeps) and then small ones into the same
+  // QueryIds: each answer is exactly its own, on every path.
+  std::vector<Aabb2> scene;
+  for (int k = 0; k < 40; ++k) scene.push_back(box(k, 0, k + 0.5, 1));
+  const UniformGrid grid(scene);
+  testing::BatchPathGuard guard;
+  for (const BatchPath path : testing::availableBatchPaths()) {
+    setBatchPath(path);
+    SCOPED_TRACE(batchPathName(path));
+    QueryIds ids;
+    EXPECT_TRUE(ids.empty());
+    grid.query(box(-1, -1, 50, 2), ids);
+    ASSERT_EQ(ids.size(), 40u);
+    for (std::uint32_t k = 0; k < 40; ++k) EXPECT_EQ(ids[k], k);
+    grid.query(box(3.25, 0.5, 4.25, 0.5), ids);
+    EXPECT_EQ(std::vector<std::uint32_t>(ids.begin(), ids.end()),
+              (std::vector<std::uint32_t>{3, 4}));
+    grid.query(box(100, 100, 101, 101), ids);
+    EXPECT_TRUE(ids.empty());
+    EXPECT_EQ(ids.begin(), ids.end());
+    grid.query(box(0, 0, 8.75, 1), ids);  // boxes 0-8: one more than the register path keeps
+    EXPECT_EQ(ids.size(), 9u);
+    grid.query(box(0, 0, 7.75, 1), ids);  // boxes 0-7: exactly as many as it keeps
+    EXPECT_EQ(ids.size(), 8u);
+    EXPECT_EQ(ids[7], 7u);
+  }
 }
 
 TEST(BroadPhase, RepeatedQueriesStayDeduped) {
