@@ -258,17 +258,18 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
 }
 
 void UniformGrid::query(const Aabb2& query, QueryIds& out) const {
-  std::vector<std::uint32_t>& storage = out.storage_;
-  if (storage.size() < grid_detail::kFewIds) [[unlikely]] {
-    storage.resize(grid_detail::kFewIds);
-  }
-  const std::size_t count = queryFew(query, storage.data());
+  const std::size_t count = queryFew(query, out.storage_.data());
   if (count <= grid_detail::kFewIds) [[likely]] {
     out.count_ = count;
     return;
   }
-  queryBuffered(query, storage);
-  out.count_ = storage.size();
+  queryCrowded(query, out);
+}
+
+[[gnu::noinline]] void UniformGrid::queryCrowded(const Aabb2& query, QueryIds& out) const {
+  queryBuffered(query, out.storage_);
+  out.count_ = out.storage_.size();
+  if (out.storage_.size() < grid_detail::kFewIds) out.storage_.resize(grid_detail::kFewIds);
 }
 
 void UniformGrid::queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const {

@@ -15,6 +15,9 @@ namespace cardemo {
 /// common handful of ids straight into it, with none of std::vector's bookkeeping.
 class QueryIds {
  public:
+  /// Empty, with room for the grid's fixed block of few ids (so the common query never resizes).
+  QueryIds() : storage_(grid_detail::kFewIds) {}
+
   /// The ids, in increasing order.
   [[nodiscard]] std::span<const std::uint32_t> ids() const { return {storage_.data(), count_}; }
   /// Number of ids.
@@ -27,17 +30,13 @@ class QueryIds {
   [[nodiscard]] const std::uint32_t* end() const { return storage_.data() + count_; }
   /// Id k, k < size().
   [[nodiscard]] std::uint32_t operator[](std::size_t k) const { return storage_[k]; }
-  /// Makes room for `n` ids ahead of time (and for the fast path's fixed block, so that no
-  /// query allocates until one finds more than `n`).
-  void reserve(std::size_t n) {
-    storage_.reserve(n > grid_detail::kFewIds ? n : grid_detail::kFewIds);
-    if (storage_.size() < grid_detail::kFewIds) storage_.resize(grid_detail::kFewIds);
-  }
+  /// Makes room for `n` ids ahead of time, so that no query allocates until one finds more.
+  void reserve(std::size_t n) { storage_.reserve(n); }
 
  private:
   friend class UniformGrid;
-  // storage_[0, count_) are the ids; storage_ never shrinks, so once it holds the fast path's
-  // fixed block of ids a query writes them without a size change.
+  // storage_[0, count_) are the ids. storage_ always holds at least kFewIds entries, so that the
+  // grid writes its fixed block of few ids with no size change.
   std::vector<std::uint32_t> storage_;
   std::size_t count_ = 0;
 };
@@ -105,6 +104,9 @@ class UniformGrid {
   // order) and returns how many were found, or more than kFewIds when they did not fit (`few` is
   // then unspecified); none when the path does not apply (oversized items, or no AVX2).
   [[nodiscard]] std::size_t queryFew(const Aabb2& query, std::uint32_t* few) const;
+  // query(QueryIds) when queryFew does not apply or finds more than it keeps. Out of line, so the
+  // common path saves few registers.
+  void queryCrowded(const Aabb2& query, QueryIds& out) const;
   // The query when scanFewAvx2 is not used or finds more than it keeps: the scan stores ids to a
   // buffer, which is then sorted.
   void queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const;
