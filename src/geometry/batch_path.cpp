@@ -53,9 +53,19 @@ BatchPath widestUpTo(BatchPath wanted) {
   return BatchPath::kPortable;
 }
 
-std::atomic<BatchPath>& chosenPath() {
-  static std::atomic<BatchPath> path{batchPathNamed(std::getenv("CARDEMO_BATCH_PATH"))};
-  return path;
+// The path in use, or kUnchosen before the first batchPath() or setBatchPath(). Constant-
+// initialised, so it is valid before any dynamic initialiser runs, and a check costs one load and
+// one compare: with a function-local static, every dispatching caller also inlined the guard and
+// the first call's getenv, and saved registers for them.
+constexpr int kUnchosen = -1;
+std::atomic<int> chosen{kUnchosen};
+
+[[gnu::noinline, gnu::cold]] BatchPath chooseFromEnvironment() {
+  int expected = kUnchosen;
+  const int named = static_cast<int>(batchPathNamed(std::getenv("CARDEMO_BATCH_PATH")));
+  // A setBatchPath that came first wins, as it does over the first read of a static.
+  chosen.compare_exchange_strong(expected, named, std::memory_order_relaxed);
+  return static_cast<BatchPath>(chosen.load(std::memory_order_relaxed));
 }
 
 }  // namespace
@@ -74,12 +84,15 @@ BatchPath batchPathNamed(const char* name) {
 }
 
 BatchPath batchPath() {
-  return chosenPath().load(std::memory_order_relaxed);
+  const int path = chosen.load(std::memory_order_relaxed);
+  if (path != kUnchosen) [[likely]]
+    return static_cast<BatchPath>(path);
+  return chooseFromEnvironment();
 }
 
 void setBatchPath(BatchPath path) {
   assert(batchPathAvailable(path));
-  chosenPath().store(path, std::memory_order_relaxed);
+  chosen.store(static_cast<int>(path), std::memory_order_relaxed);
 }
 
 const char* batchPathName(BatchPath path) {
