@@ -126,56 +126,70 @@ std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, cons
   // count in rows of kFew.slot.
   __m256 found = _mm256_setzero_ps();
   std::size_t at = 0;
-  for (std::size_t i = 0; i < level_count; ++i) {
-    // No test against the level's bounds: off them the window is clamped to the edge cells, whose
-    // boxes the query does not touch (and a NaN query touches nothing).
-    const LevelArrays& l = levels[i];
-    const Window w = windowOf(l, q);
-    if (w.x1 < w.x0) continue;  // an inverted query
+  // Rows base .. min(base + 55, w.y1) of level l; false when they hold more ids than are kept.
+  const auto scanRows = [&](const LevelArrays& l, const Window& w, std::int64_t base)
+      __attribute__((always_inline)) {
     const double *const min_x = l.min_x, *const min_y = l.min_y;
     const double *const max_x = l.max_x, *const max_y = l.max_y;
     const std::uint32_t* const ids = l.ids;
     const std::int64_t nx = l.nx;
-    for (std::int64_t base = w.y0; base <= w.y1; base += 56) {
-      // Row base + r holds the boxes [first[r * nx], end[r * nx]) of the window.
-      const std::uint32_t* const first = l.cell_start + base * nx + w.x0;
-      const std::uint32_t* const end = l.cell_start + base * nx + w.x1 + 1;
-      // Rows base .. base + 55 from one unaligned load (x86 is little-endian, so bit y of the
-      // bit set is bit y % 8 of byte y / 8; the word past the last row's keeps the load inside).
-      std::uint64_t rows;
-      __builtin_memcpy(&rows, reinterpret_cast<const unsigned char*>(l.row_bits) + (base >> 3),
-                       sizeof rows);
-      rows >>= base & 7;
-      const std::int64_t last = w.y1 - base;
-      rows &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
-      for (; rows != 0; rows &= rows - 1) {
-        const std::int64_t row = __builtin_ctzll(rows) * nx;
-        std::uint32_t k = first[row];
-        const std::uint32_t stop = end[row];
-        // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
-        do {
-          // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found.
-          __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(min_x + k), qmax_x, _CMP_LE_OQ),
-                                     _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(max_x + k), _CMP_LE_OQ));
-          in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(min_y + k), qmax_y, _CMP_LE_OQ));
-          in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(max_y + k), _CMP_LE_OQ));
-          // Only the lanes of this row's boxes.
-          const __m256i left = _mm256_set1_epi64x(static_cast<long long>(stop) - k);
-          in = _mm256_and_pd(in, _mm256_castsi256_pd(_mm256_cmpgt_epi64(left, lane)));
-          const unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(in));
-          const __m256i slots = _mm256_cvtepi8_epi32(
-              _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kFew.slot[0][bits][0] + at)));
-          const __m256i lanes =
-              _mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + k)));
-          found = _mm256_blendv_ps(found,
-                                   _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(lanes, slots)),
-                                   _mm256_castsi256_ps(slots));
-          at += kFew.advance[bits];
-          // More than kept: the caller scans again.
-          if (at > kFewIds * sizeof kFew.slot[0]) [[unlikely]]
-            return kFewIds + 1;
-          k += 4;
-        } while (k < stop);
+    // Row base + r holds the boxes [first[r * nx], end[r * nx]) of the window.
+    const std::uint32_t* const first = l.cell_start + base * nx + w.x0;
+    const std::uint32_t* const end = l.cell_start + base * nx + w.x1 + 1;
+    // Rows base .. base + 55 from one unaligned load (x86 is little-endian, so bit y of the bit
+    // set is bit y % 8 of byte y / 8; the word past the last row's keeps the load inside).
+    std::uint64_t rows;
+    __builtin_memcpy(&rows, reinterpret_cast<const unsigned char*>(l.row_bits) + (base >> 3),
+                     sizeof rows);
+    rows >>= base & 7;
+    const std::int64_t last = w.y1 - base;
+    rows &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
+    for (; rows != 0; rows &= rows - 1) {
+      const std::int64_t row = __builtin_ctzll(rows) * nx;
+      std::uint32_t k = first[row];
+      const std::uint32_t stop = end[row];
+      // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
+      do {
+        // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found.
+        __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(min_x + k), qmax_x, _CMP_LE_OQ),
+                                   _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(max_x + k), _CMP_LE_OQ));
+        in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(min_y + k), qmax_y, _CMP_LE_OQ));
+        in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(max_y + k), _CMP_LE_OQ));
+        // Only the lanes of this row's boxes.
+        const __m256i left = _mm256_set1_epi64x(static_cast<long long>(stop) - k);
+        in = _mm256_and_pd(in, _mm256_castsi256_pd(_mm256_cmpgt_epi64(left, lane)));
+        const unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(in));
+        const __m256i slots = _mm256_cvtepi8_epi32(
+            _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kFew.slot[0][bits][0] + at)));
+        const __m256i lanes =
+            _mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + k)));
+        found =
+            _mm256_blendv_ps(found, _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(lanes, slots)),
+                             _mm256_castsi256_ps(slots));
+        at += kFew.advance[bits];
+        if (at > kFewIds * sizeof kFew.slot[0]) [[unlikely]]
+          return false;
+        k += 4;
+      } while (k < stop);
+    }
+    return true;
+  };
+  // No test against a level's bounds: off them the window is clamped to the edge cells, whose
+  // boxes the query does not touch (and a NaN query touches nothing).
+  // The common query (one level, one word of rows) apart, so fewer values are live in its loops.
+  const bool one_word = level_count == 1 && [&] {
+    const Window w = windowOf(levels[0], q);
+    return w.x0 <= w.x1 && w.y1 - w.y0 < 56;
+  }();
+  if (one_word) [[likely]] {
+    const Window w = windowOf(levels[0], q);
+    if (!scanRows(levels[0], w, w.y0)) return kFewIds + 1;  // more than kept: the caller scans
+  } else {
+    for (std::size_t i = 0; i < level_count; ++i) {
+      const Window w = windowOf(levels[i], q);
+      if (w.x1 < w.x0) continue;  // an inverted query
+      for (std::int64_t base = w.y0; base <= w.y1; base += 56) {
+        if (!scanRows(levels[i], w, base)) return kFewIds + 1;
       }
     }
   }

@@ -227,6 +227,28 @@ TEST(BroadPhase, GridMatchesBruteForceOnSeededScenes) {
   }
 }
 
+TEST(BroadPhase, TallQueriesOverManyRowsOfOneLevelMatchBruteForce) {
+  // One level of equal boxes, and thin queries whose windows span more rows than the scans take
+  // from one word of row bits (56), finding only a few boxes: the AVX2 scan's path for several
+  // words, beside its one-word path for the short queries.
+  std::mt19937_64 rng(56);
+  std::uniform_real_distribution<double> pos(0.0, 1000.0), unit(0.0, 1.0);
+  std::vector<Aabb2> scene;
+  for (int k = 0; k < 2000; ++k) {
+    const double x = pos(rng), y = pos(rng);
+    scene.push_back(box(x, y, x + 1.0, y + 1.0));
+  }
+  std::vector<Aabb2> queries;
+  for (int q = 0; q < 400; ++q) {
+    const double x = pos(rng), y = pos(rng);
+    const double height = q % 2 == 0 ? 1000.0 * unit(rng) : 3.0 * unit(rng);
+    queries.push_back(box(x, y - height, x + 0.2 * unit(rng), y + height));
+  }
+  const UniformGrid grid(scene);
+  ASSERT_EQ(grid.levelCount(), 1u);
+  expectTwins(scene, queries, "tall");
+}
+
 TEST(BroadPhase, TouchingBoxesCountAndResultsAreSortedUnique) {
   const std::vector<Aabb2> scene{box(0, 0, 10, 10), box(10, 0, 12, 1), box(-3, -3, 0, 0),
                                  box(20, 20, 21, 21), box(0, 0, 30, 30)};
