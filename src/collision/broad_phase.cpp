@@ -74,6 +74,11 @@ void spillInto(grid_detail::IdSink& sink) {
   sink.count = 0;
 }
 
+// Out of line and cold, so that the common query keeps a small frame.
+[[gnu::noinline, gnu::cold]] void growToFewIds(std::vector<std::uint32_t>& storage) {
+  storage.resize(grid_detail::kFewIds);
+}
+
 }  // namespace
 
 UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
@@ -258,6 +263,9 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
 }
 
 void UniformGrid::query(const Aabb2& query, QueryIds& out) const {
+  // A moved-from QueryIds has lost its storage.
+  if (out.storage_.size() < grid_detail::kFewIds) [[unlikely]]
+    growToFewIds(out.storage_);
   const std::size_t count = queryFew(query, out.storage_.data());
   if (count <= grid_detail::kFewIds) [[likely]] {
     out.count_ = count;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "collision/grid_scan.hpp"
@@ -17,6 +18,21 @@ class QueryIds {
  public:
   /// Empty, with room for the grid's fixed block of few ids (so the common query never resizes).
   QueryIds() : storage_(grid_detail::kFewIds) {}
+  /// Copies.
+  QueryIds(const QueryIds& other) = default;
+  /// Copies.
+  QueryIds& operator=(const QueryIds& other) = default;
+  /// Takes the ids; `other` is left empty (its storage is restored at its next query).
+  QueryIds(QueryIds&& other) noexcept
+      : storage_(std::move(other.storage_)), count_(std::exchange(other.count_, 0)) {}
+  /// Takes the ids; `other` is left empty.
+  QueryIds& operator=(QueryIds&& other) noexcept {
+    storage_ = std::move(other.storage_);
+    count_ = std::exchange(other.count_, 0);
+    return *this;
+  }
+  /// Frees the storage.
+  ~QueryIds() = default;
 
   /// The ids, in increasing order.
   [[nodiscard]] std::span<const std::uint32_t> ids() const { return {storage_.data(), count_}; }
@@ -35,8 +51,9 @@ class QueryIds {
 
  private:
   friend class UniformGrid;
-  // storage_[0, count_) are the ids. storage_ always holds at least kFewIds entries, so that the
-  // grid writes its fixed block of few ids with no size change.
+  // storage_[0, count_) are the ids. storage_ holds at least kFewIds entries (a moved-from one
+  // regains them at its next query), so that the grid writes its fixed block of few ids with no
+  // size change.
   std::vector<std::uint32_t> storage_;
   std::size_t count_ = 0;
 };

@@ -422,6 +422,15 @@ TEST(BroadPhase, QueryIdsKeepTheirStorageFromCrowdedToFewIds) {
     grid.query(box(0, 0, 7.75, 1), ids);  // boxes 0-7: exactly as many as it keeps
     EXPECT_EQ(ids.size(), 8u);
     EXPECT_EQ(ids[7], 7u);
+
+    // A moved-from QueryIds (its storage gone) answers the next query all the same.
+    QueryIds taken = std::move(ids);
+    EXPECT_EQ(taken.size(), 8u);
+    EXPECT_TRUE(ids.empty());  // NOLINT(bugprone-use-after-move): the moved-from state is defined
+    EXPECT_EQ(ids.begin(), ids.end());
+    grid.query(box(3.25, 0.5, 4.25, 0.5), ids);  // NOLINT(bugprone-use-after-move): on purpose
+    EXPECT_EQ(std::vector<std::uint32_t>(ids.begin(), ids.end()),
+              (std::vector<std::uint32_t>{3, 4}));
   }
 }
 
