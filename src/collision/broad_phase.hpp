@@ -139,8 +139,6 @@ class BruteForceBroadPhase {
       : boxes_(boxes.begin(), boxes.end()) {}
   /// Same contract as UniformGrid::query.
   void query(const Aabb2& query, std::vector<std::uint32_t>& out) const;
-  /// The same ids into `out`: the cheaper form (no std::vector size bookkeeping per query).
-  void query(const Aabb2& query, QueryIds& out) const;
 
  private:
   std::vector<Aabb2> boxes_;
