@@ -113,6 +113,7 @@ void registerLayout(bool random, std::size_t n) {
         s.counters["candidates"] = static_cast<double>(found) /
                                    static_cast<double>(std::max<std::int64_t>(1, s.iterations()));
         s.counters["bytes_per_car"] = static_cast<double>(g.memoryBytes()) / static_cast<double>(n);
+        s.counters["cell_m"] = g.levelCount() > 0 ? g.cellSize(0) : 0.0;
       });
 #if defined(CARDEMO_HAVE_COMPARE)
   benchmark::RegisterBenchmark(

@@ -104,9 +104,8 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
   const double wy = finiteWidth(level.bounds.max.y() - level.bounds.min.y());
   double cell = kCellScale * std::sqrt(wx * wy / static_cast<double>(n));
   // No smaller than the boxes' mean reach: a window spans the query plus the reach, so smaller
-  // cells add rows (each a bit scan and a step) without leaving out boxes. Cars at any heading
-  // (reach about 5.5 m both ways) then take 10 % fewer instructions a query; a lot of aligned
-  // cars keeps its cells.
+  // cells add rows (each a bit scan and a step) without leaving out boxes (docs/performance.md,
+  // "Broad-phase query", gives the counts).
   cell = std::max(cell, 0.5 * (level.reach.x() + level.reach.y()));
   if (!(cell > 0.0) || !std::isfinite(cell)) {
     // Collinear or coincident boxes: spread them along the longer side.
@@ -282,7 +281,7 @@ void UniformGrid::query(const Aabb2& query, QueryIds& out) const {
 [[gnu::noinline]] void UniformGrid::queryCrowded(const Aabb2& query, QueryIds& out) const {
   queryBuffered(query, out.storage_);
   out.count_ = out.storage_.size();
-  if (out.storage_.size() < grid_detail::kFewIds) out.storage_.resize(grid_detail::kFewIds);
+  if (out.storage_.size() < grid_detail::kFewIds) growToFewIds(out.storage_);
 }
 
 void UniformGrid::queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const {

@@ -93,6 +93,8 @@ class UniformGrid {
   [[nodiscard]] std::size_t memoryBytes() const;
   /// Number of size classes in use (1 for a lot of similar cars), not counting oversized items.
   [[nodiscard]] std::size_t levelCount() const { return levels_.size(); }
+  /// Side of the cells of level `k` (k < levelCount()), metres.
+  [[nodiscard]] double cellSize(std::size_t k) const { return 1.0 / levels_[k].inv_cell; }
 
  private:
   // One grid over the items of one size class, struct of arrays (grid_scan.hpp, LevelArrays): item

@@ -249,6 +249,24 @@ TEST(BroadPhase, TallQueriesOverManyRowsOfOneLevelMatchBruteForce) {
   expectTwins(scene, queries, "tall");
 }
 
+TEST(BroadPhase, CellsAreNoSmallerThanTheBoxesMeanReach) {
+  // 2,000 boxes of 5 m by 3 m on 100 m by 100 m: the density rule alone (0.7 times the root of
+  // the area per box) would give 1.6 m cells, smaller than the 4 m mean reach.
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> pos(0.0, 100.0);
+  std::vector<Aabb2> scene;
+  for (int k = 0; k < 2000; ++k) {
+    const double x = pos(rng), y = pos(rng);
+    scene.push_back(box(x, y, x + 5.0, y + 3.0));
+  }
+  const UniformGrid grid(scene);
+  ASSERT_EQ(grid.levelCount(), 1u);
+  EXPECT_GE(grid.cellSize(0), 4.0);
+  std::vector<Aabb2> queries;
+  for (int q = 0; q < 300; ++q) queries.push_back(randomQuery(scene, rng));
+  expectTwins(scene, queries, "reach-sized cells");
+}
+
 TEST(BroadPhase, TouchingBoxesCountAndResultsAreSortedUnique) {
   const std::vector<Aabb2> scene{box(0, 0, 10, 10), box(10, 0, 12, 1), box(-3, -3, 0, 0),
                                  box(20, 20, 21, 21), box(0, 0, 30, 30)};
