@@ -98,8 +98,9 @@ CarState integrateCarToward(const CarState& state, const InputFrame& input, cons
                             double dt, double steer_target) {
   CarState steered = state;
   steered.steer = approach(state.steer, steer_target, params.steer_rate * dt);
+  steered.speed = settledAtLimit(state.speed, input, params);
 
-  const SpeedLaw law = speedLawFor(state.speed, input, params);
+  const SpeedLaw law = speedLawFor(steered.speed, input, params);
   CarState next;
   switch (params.integrator) {
     case CarIntegrator::kArcRk4:  // the game's

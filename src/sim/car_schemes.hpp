@@ -23,15 +23,20 @@ struct SpeedLaw {
   double drag = 0.0;     ///< Drag coefficient, 1/m.
   double rolling = 0.0;  ///< Rolling resistance, m/s^2.
   double limit = 0.0;    ///< Speed (m/s, signed like `travel`) beyond which the command is off.
-  bool limited = false;  ///< True when `command` is the engine's, which switches off at `limit`.
-  bool capped = false;   ///< True when the step's end speed is clamped to `limit`.
+  bool limited = false;  ///< True when `command` is the engine's, which switches off past `limit`.
+  bool capped = false;   ///< True when the step's end speed is clamped to `cap`.
+  /// The end speed's bound when capped (m/s, signed like `travel`): `limit`, or the start speed
+  /// when that is already past it (a slide or the scene's initial speed).
+  double cap = 0.0;
 
   // rate, alongTravel and endSpeed are defined here (inline) because RK4 calls them 4 times a step.
 
   /// Acceleration at speed `v` (m/s^2); zero once the car has stopped against its travel.
   [[nodiscard]] double rate(double v) const {
     if (travel == 0.0) return 0.0;
-    const double push = limited && travel * v >= travel * limit ? 0.0 : command;
+    // Off only past the limit: a car exactly at it (where the cap puts it) pushes as one an ulp
+    // below does, so that the step is continuous in the start speed there.
+    const double push = limited && travel * v > travel * limit ? 0.0 : command;
     const double a = push - drag * v * std::abs(v) - rolling * travel;
     // Stopped (or at rest and about to move): nothing here can push the car against its travel.
     if (travel * v <= 0.0 && travel * a <= 0.0) return 0.0;
@@ -43,19 +48,23 @@ struct SpeedLaw {
     if (travel < 0.0) return std::min(v, 0.0);
     return 0.0;
   }
-  /// The speed at the end of a step: along the travel and within the reverse cap (m/s).
+  /// The speed at the end of a step: along the travel and within the cap (m/s).
   [[nodiscard]] double endSpeed(double v) const {
     const double along = alongTravel(v);
     if (!capped) return along;
-    return travel > 0.0 ? std::min(along, limit) : std::max(along, limit);
+    return travel > 0.0 ? std::min(along, cap) : std::max(along, cap);
   }
   /// The command alone as one explicit step from `v` over `dt` (semi-implicit Euler's first
-  /// half): clamped at `limit` when capped, else toward zero, stopping exactly on it.
+  /// half): clamped at `cap` when capped, else toward zero, stopping exactly on it.
   [[nodiscard]] double commandedSpeed(double v, double dt) const;
 };
 
 /// The speed law of one step from the speed at its start (m/s) and the keys held.
 [[nodiscard]] SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params);
+
+/// The start speed (m/s) of a step, with a speed within rounding of the limit that the held
+/// throttle or reverse key drives towards (max_speed, -max_reverse_speed) taken as that limit.
+[[nodiscard]] double settledAtLimit(double speed, const InputFrame& input, const CarParams& params);
 
 /// Semi-implicit Euler (the product's original update, kept bit for bit): the command, then drag
 /// and rolling resistance, give the new speed, which then drives the heading and the position.

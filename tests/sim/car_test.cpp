@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "geometry/angle.hpp"
 #include "key_frames.hpp"
@@ -373,6 +374,41 @@ TEST_P(EveryIntegrator, SpeedCapIsReachedAndHeld) {
   fast = integrateCar(fast, kUp, p, kDt);
   EXPECT_LT(fast.speed, 8.0);
   EXPECT_GT(fast.speed, 7.9);
+}
+
+// Held at either limit, the speed lands on it or within an ulp or two of it, on either side, and a
+// turned or mirrored copy of the drive lands on another of those values. The step from each must
+// be the step from the limit: before settledAtLimit, a start speed on the limit or past it turned
+// the engine off for the step (a 2 mm/s dip every other frame, and about 3e-5 m of position).
+TEST_P(EveryIntegrator, StepIsContinuousInTheStartSpeedAtEitherLimit) {
+  CarParams p = withIntegrator(GetParam());
+  p.max_speed = 5.5;
+  for (const auto& [keys, limit] :
+       {std::pair{kUp, p.max_speed}, std::pair{kDown, -p.max_reverse_speed}}) {
+    CarState at;
+    at.position = {12.5, -3.25};
+    at.heading = 0.3;
+    at.direction = unitFromRadians(at.heading);
+    at.speed = limit;
+    const CarState reference = integrateCar(at, keys, p, kDt);
+    // The step from the limit keeps it (within the resistance that semi-implicit Euler applies
+    // after its capped command).
+    EXPECT_NEAR(reference.speed, limit, 1e-3 * std::abs(limit)) << "limit " << limit;
+    double inside = limit, beyond = limit;
+    for (int ulps = 1; ulps <= 3; ++ulps) {
+      inside = std::nextafter(inside, 0.0);
+      beyond = std::nextafter(beyond, 2.0 * limit);
+      for (const double start : {inside, beyond}) {
+        CarState s = at;
+        s.speed = start;
+        const CarState next = integrateCar(s, keys, p, kDt);
+        EXPECT_LE((next.position - reference.position).norm(), 1e-12)
+            << "limit " << limit << ", start " << start;
+        EXPECT_LE(std::abs(next.speed - reference.speed), 1e-12)
+            << "limit " << limit << ", start " << start;
+      }
+    }
+  }
 }
 
 TEST(Car, BoxFollowsTheState) {
