@@ -13,6 +13,7 @@
 #include "geometry/polygon_store.hpp"
 #include "geometry/sat_obb2.hpp"
 #include "kernels/manifold2.hpp"
+#include "kernels/manifold2_batch.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
 #include "compare/box2d/box2d_shapes.hpp"
@@ -57,6 +58,23 @@ void overPairs(benchmark::State& state, std::size_t n, double overlap_share,
   state.counters["overlap_share"] = overlap_share;
 }
 
+// The same pairs as struct-of-arrays batches, and room for their manifolds.
+struct BatchPairs {
+  Obb2Batch a, b;
+  Manifold2Batch out;
+};
+
+BatchPairs& batchPairs(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<BatchPairs>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    const PairSet2& set = pairSet2(n);
+    slot = std::make_unique<BatchPairs>(BatchPairs{Obb2Batch(set.a), Obb2Batch(set.b), {}});
+    slot->out.resize(n);
+  }
+  return *slot;
+}
+
 #if defined(CARDEMO_HAVE_COMPARE)
 struct Box2dPairs {
   std::vector<compare::Box2dShape> a, b;
@@ -99,6 +117,21 @@ void registerSize(std::size_t n) {
       return static_cast<double>(m.count) + m.normal.x();
     });
   });
+  // Every pair's manifold written to memory (struct of arrays), four pairs per AVX2 instruction.
+  benchmark::RegisterBenchmark(
+      name("manifoldObb2Batch", "cardemo").c_str(), [n](benchmark::State& s) {
+        BatchPairs& p = batchPairs(n);
+        double sink = 0.0;
+        for (auto _ : s) {
+          manifoldObb2Batch(p.a, p.b, p.out);
+          sink += static_cast<double>(p.out.count(n - 1)) + p.out.normalX(n / 2);
+          benchmark::DoNotOptimize(sink);
+          benchmark::ClobberMemory();
+        }
+        s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()) *
+                            static_cast<std::int64_t>(n));
+        s.counters["overlap_share"] = pairSet2(n).overlap_share;
+      });
   benchmark::RegisterBenchmark(
       name("collidePolygons", "cardemo").c_str(), [n](benchmark::State& s) {
         const PolygonPairs& p = polygonPairs(n);

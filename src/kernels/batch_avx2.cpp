@@ -14,6 +14,7 @@
 #include <immintrin.h>
 
 #include "kernels/batch_kernels.hpp"
+#include "kernels/manifold2_lanes.hpp"
 
 namespace cardemo::batch_detail {
 namespace {
@@ -81,6 +82,30 @@ struct Lane4 {
   const std::uint32_t bytes = ((bits * 0x00204081u) & 0x01010101u) ^ 0x01010101u;
   __builtin_memcpy(p, &bytes, sizeof bytes);
 }
+// The manifold kernel's mask and sign-bit operations (manifold2_lanes.hpp), all on any vector pipe.
+[[gnu::always_inline]] inline Mask4 operator^(Mask4 a, Mask4 b) {
+  return {_mm256_xor_pd(a.m, b.m)};
+}
+[[gnu::always_inline]] inline Mask4 andNot(Mask4 a, Mask4 b) {
+  return {_mm256_andnot_pd(a.m, b.m)};
+}
+[[gnu::always_inline]] inline Lane4 onlyWhere(Mask4 m, Lane4 x) {
+  return {_mm256_and_pd(m.m, x.v)};
+}
+[[gnu::always_inline]] inline Lane4 onlyWhereNot(Mask4 m, Lane4 x) {
+  return {_mm256_andnot_pd(m.m, x.v)};
+}
+[[gnu::always_inline]] inline Lane4 flipSign(Lane4 x, Lane4 sign_bits) {
+  return {_mm256_xor_pd(x.v, sign_bits.v)};
+}
+// batch_kernels.hpp's masked sign flip, without a blend.
+[[gnu::always_inline]] inline Lane4 negateWhere(Mask4 m, Lane4 x) {
+  return {_mm256_xor_pd(x.v, _mm256_and_pd(m.m, _mm256_set1_pd(-0.0)))};
+}
+// The lanes hold small whole numbers: converted exactly, four 32-bit integers stored at once.
+[[gnu::always_inline]] inline void storeInt32(std::int32_t* p, Lane4 a) {
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm256_cvtpd_epi32(a.v));
+}
 [[gnu::always_inline]] inline bool allOf(Mask4 m) {
   return _mm256_movemask_pd(m.m) == 0xF;
 }
@@ -95,6 +120,11 @@ void overlap2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std:
 void collide2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                   const Sat2Out& out) {
   runCollide2<Lane4>(a, b, first, last, out);
+}
+
+void manifold2Avx2(const Box2Arrays& a, const Box2Arrays& b, const ManifoldParams& settings,
+                   std::size_t first, std::size_t last, const Manifold2Out& out) {
+  runManifold2<Lane4>(a, b, settings, first, last, out);
 }
 
 void overlap3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,

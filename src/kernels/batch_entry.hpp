@@ -28,6 +28,25 @@ struct Sat2Out {
   double *nx, *ny;     ///< Normal components, world frame.
 };
 
+/// Where manifold2 writes, one entry per pair (manifold2_batch.hpp, Manifold2Batch): the normal,
+/// the points' positions, separations and features (entries past the count unspecified), the
+/// count and the reference face.
+struct Manifold2Out {
+  double *nx, *ny;                    ///< Unit normal from A towards B.
+  double *p0x, *p0y, *p1x, *p1y;      ///< Points on B's surface, world metres.
+  double *separation0, *separation1;  ///< Their separations, metres.
+  std::int32_t *feature0, *feature1;  ///< Their feature ids.
+  std::int32_t* count;                ///< 0, 1 or 2.
+  std::int32_t* reference_face;       ///< 0-7, or -1 for none.
+};
+
+/// ManifoldSettings as the manifold kernel reads them: margin(x) = relative |x| + absolute.
+struct ManifoldParams {
+  double max_separation;  ///< Points farther apart are not contacts, metres.
+  double relative;        ///< 1 - ManifoldSettings::relative_tolerance.
+  double absolute;        ///< ManifoldSettings::absolute_tolerance, metres.
+};
+
 /// The float copy of one 2D box (A) that the float pre-filter reads: centre relative to the
 /// batch's reference point (the difference taken in double, then rounded), axis and half extents
 /// rounded to float, and the per-call part of the error bound (batch2_filter.hpp).
@@ -96,6 +115,10 @@ void separation3Portable(const Box3One& a, const Box3Arrays& b, std::size_t firs
 
 void overlap2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                   std::uint8_t* hit);
+// The manifolds of pairs (a[i], b[i]) for i in [first, last), where last - first is a multiple of
+// four: manifoldObb2 with no previous face, bit for bit (manifold2_lanes.hpp).
+void manifold2Avx2(const Box2Arrays& a, const Box2Arrays& b, const ManifoldParams& settings,
+                   std::size_t first, std::size_t last, const Manifold2Out& out);
 void collide2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                   const Sat2Out& out);
 // 2D with the float pre-filter (batch2_filter.hpp): same verdicts as overlap2*, bit for bit.
