@@ -156,15 +156,20 @@ def size_value(label):
 
 def narrow_tables(r, csv_rows):
     targets = {("manifoldObb2", "1k"): 10.0, ("manifoldObb2", "1M"): 20.0,
+               ("manifoldObb2Batch", "1k"): 10.0, ("manifoldObb2Batch", "1M"): 20.0,
                ("overlapObb3", "1k"): 25.0, ("collideObb3", "1k"): 40.0}
     rows = []
-    for query in ("overlapObb2", "collideObb2", "manifoldObb2", "collidePolygons", "overlapObb3",
-                  "collideObb3"):
+    for query in ("overlapObb2", "collideObb2", "manifoldObb2", "manifoldObb2Batch",
+                  "collidePolygons", "overlapObb3", "collideObb3"):
+        # The batched manifold runs on the same pairs as the one-pair query, against the same
+        # Box2D row (b2CollidePolygons one pair at a time: Box2D 2.4 has no batched form).
+        box2d_query = "manifoldObb2" if query == "manifoldObb2Batch" else query
         for size in sizes_in(r, f"narrow/{query}/"):
             ours = r.ns_per_item(f"narrow/{query}/{size}/cardemo")
-            theirs = r.ns_per_item(f"narrow/{query}/{size}/box2d")
+            theirs = r.ns_per_item(f"narrow/{box2d_query}/{size}/box2d")
             t = targets.get((query, size))
             box2d_name = {"overlapObb2": "b2TestOverlap", "manifoldObb2": "b2CollidePolygons",
+                          "manifoldObb2Batch": "b2CollidePolygons",
                           "collidePolygons": "b2CollidePolygons"}.get(query, "")
             rows.append([f"`{query}`", size, fmt(ours, " ns"),
                          f"{fmt(theirs, ' ns')} ({box2d_name})" if theirs else "no Box2D equivalent",
@@ -176,7 +181,9 @@ def narrow_tables(r, csv_rows):
             "pairs stay in the L1/L2 caches and repeat often enough for the branch predictor to "
             "learn part of their sequence (both engines gain from it); 64k pairs fit in L3 but "
             "repeat too rarely to be learned; 1M pairs come from memory. So 64k against 1k shows "
-            "what the learned branches give, and 1M against 64k what memory costs.\n\n"
+            "what the learned branches give, and 1M against 64k what memory costs. "
+            "`manifoldObb2Batch` is every pair's manifold at once, from and to struct-of-arrays "
+            "storage (the results written to memory), on the same pairs.\n\n"
             "Reproduce: `build-perf/bench/cardemo_bench --benchmark_filter='^narrow/'`\n\n" +
             table(["query", "pairs", "cardemo", "Box2D 2.4.1", "ratio", "target", "status"], rows))
 
@@ -347,6 +354,12 @@ def targets_table(r):
         theirs = ns_pair(f"narrow/{query}/{size}/box2d")
         add(f"`{query}`, {size} pairs, one at a time", f"<= {t:g} ns", fmt(ours[0], " ns"),
             fmt(ours[1], " ns"), f"{times_text(theirs)} ({b2})" if b2 else "no equivalent",
+            [verdict(x, t) for x in ours])
+    for size, t in (("1k", 10.0), ("1M", 20.0)):
+        ours = ns_pair(f"narrow/manifoldObb2Batch/{size}/cardemo")
+        theirs = ns_pair(f"narrow/manifoldObb2/{size}/box2d")
+        add(f"`manifoldObb2Batch`, {size} pairs, all at once", f"<= {t:g} ns", fmt(ours[0], " ns"),
+            fmt(ours[1], " ns"), f"{times_text(theirs)} (b2CollidePolygons, one at a time)",
             [verdict(x, t) for x in ours])
     for size in ("1k", "1M"):
         ours = ns_pair(f"narrow/collidePolygons/{size}/cardemo")
