@@ -82,7 +82,7 @@ struct Lane4 {
   const std::uint32_t bytes = ((bits * 0x00204081u) & 0x01010101u) ^ 0x01010101u;
   __builtin_memcpy(p, &bytes, sizeof bytes);
 }
-// The manifold kernel's mask and sign-bit operations (manifold2_lanes.hpp), all on any vector pipe.
+// The manifold kernel's mask and sign-bit operations (manifold2_lanes.hpp): bitwise logic.
 [[gnu::always_inline]] inline Mask4 operator^(Mask4 a, Mask4 b) {
   return {_mm256_xor_pd(a.m, b.m)};
 }

@@ -13,6 +13,7 @@
 #include "../support/batch_paths.hpp"
 #include "../support/random_class.hpp"
 #include "geometry/batch_path.hpp"
+#include "manifold_pairs.hpp"
 
 namespace cardemo {
 namespace {
@@ -81,15 +82,7 @@ void runRandom(std::uint64_t seed, double offset, Failures& f, Coverage& seen) {
     const int n = k % 68;
     std::vector<Obb2> a, b;
     for (int i = 0; i < n; ++i) {
-      const Eigen::Vector2d base = rng.offset(0.0, offset);
-      const Obb2 box_a = rng.extremeBox(base);
-      Obb2 box_b = rng.extremeBox(base);
-      box_b.center += rng.offset(0.0, 1.2 * (box_a.half.norm() + box_b.half.norm()));
-      if (i % 4 == 0) {
-        // Axis-aligned and exactly touching along a face, where ties decide.
-        box_b.axis = rng.integer(0, 1) == 0 ? box_a.axis : box_a.perp();
-        box_b.center = box_a.center + box_a.axis * (box_a.half.x() + box_b.half.x()) * rng.sign();
-      }
+      const auto [box_a, box_b] = testing::manifoldPair(rng, offset, i);
       a.push_back(box_a);
       b.push_back(box_b);
     }

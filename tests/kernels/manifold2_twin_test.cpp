@@ -12,6 +12,7 @@
 #include "../geometry/random_cases2.hpp"
 #include "kernels/manifold2.hpp"
 #include "manifold_margin.hpp"
+#include "manifold_pairs.hpp"
 
 namespace cardemo {
 namespace {
@@ -182,15 +183,7 @@ void runPairs(std::uint64_t seed, double offset, Failures& f, int& with_points) 
   const int n = testing::scaledCount(100000);
   const ManifoldSettings settings[3] = {{}, {0.0, 1.0, 0.0}, {0.05, 0.95, 0.002}};
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d base = rng.offset(0.0, offset);
-    const Obb2 a = rng.extremeBox(base);
-    Obb2 b = rng.extremeBox(base);
-    b.center += rng.offset(0.0, 1.2 * (a.half.norm() + b.half.norm()));
-    if (i % 4 == 0) {
-      // Axis-aligned and exactly touching along a face, where ties decide.
-      b.axis = rng.integer(0, 1) == 0 ? a.axis : a.perp();
-      b.center = a.center + a.axis * (a.half.x() + b.half.x()) * rng.sign();
-    }
+    const auto [a, b] = testing::manifoldPair(rng, offset, i);
     const ManifoldSettings& s = settings[i % 3];
     const int previous = rng.integer(-1, 7);
     const Manifold2 fast = manifoldObb2(a, b, s, previous);
