@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -124,14 +125,18 @@ TEST(Manifold2Batch, NamedCasesMatchTheScalarFunction) {
       {unit, {{1.5, 0.3}, {1, 0}, {1, 0.5}}},    // overlapping face on
       {unit, {{0, 2.0000001}, {0, 1}, {1, 1}}},  // just apart along y, turned a quarter
       {unit, {{1.9, 0}, diagonal, {0.5, 0.5}}},  // a diamond's corner in A's face
+      // A diamond's corner 0.1 m into A's face: its two incident faces tie exactly (du = -dv),
+      // and the first must win; with a large max_separation the neighbouring corners show which.
+      {unit, {{1.0 + std::sqrt(0.5) - 0.1, 0}, diagonal, {0.5, 0.5}}},
       {{{0, 0}, {1, 0}, {10, 0.1}}, {{0, 0}, {0, 1}, {10, 0.1}}},  // a cross: the centres meet
       {unit, {{0.2, -0.1}, {1, 0}, {0.1, 0.1}}},                   // B inside A
       {{{1e7, -1e7}, {1, 0}, {2.4, 1}}, {{1e7 + 4.8, -1e7 + 0.5}, {-1, 0}, {2.4, 1}}},
       {unit, {{5, 5}, {1, 0}, {1, 1}}},  // far apart
   };
   // Two points dropped by a zero max_separation keep the normal and face (count 0), and a
-  // positive one takes points of pairs apart.
-  const ManifoldSettings settings[3] = {{}, {0.5, 0.98, 0.001}, {0.0, 1.0, 0.0}};
+  // positive one takes points of pairs apart (1 m: both ends of a diamond's incident face).
+  const ManifoldSettings settings[4] = {
+      {}, {0.5, 0.98, 0.001}, {0.0, 1.0, 0.0}, {1.0, 0.98, 0.001}};
   Failures f;
   int index = 0;
   for (const ManifoldSettings& s : settings) {
