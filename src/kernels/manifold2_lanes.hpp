@@ -9,11 +9,12 @@
 // made per lane with masks, and both sides are computed. Lanes that the scalar code would have
 // left early compute values that are then replaced (a clip's division may be 0/0 there).
 //
-// The kernel is bound by the two vector pipes that multiply, compare and blend, so choices are
-// carried as masks, and a multiplication by a sign of +-1 (exact: it only sets the sign bit) is a
-// masked sign flip, which any pipe runs. Beyond batch_kernels.hpp's lane interface it needs, on
-// masks, ^ and andNot(a, b) = b where a is not set; negateWhere(m, x); onlyWhere(m, x) (x where m
-// is set, else +0) and onlyWhereNot(m, x); storeInt32(int32_t*, L); and storeMask / loadMask.
+// Choices are carried as masks combined with bitwise logic rather than blends, and a
+// multiplication by a sign of +-1 (exact: it only sets the sign bit) is a masked sign flip: a
+// blend for each choice and a multiplication for each sign made the kernel about a third slower
+// (docs/performance.md). Beyond batch_kernels.hpp's lane interface it needs, on masks, ^ and
+// andNot(a, b) = b where a is not set; negateWhere(m, x); onlyWhere(m, x) (x where m is set, else
+// +0) and onlyWhereNot(m, x); flipSign(x, sign_bits); storeInt32(int32_t*, L).
 
 #include "kernels/batch_kernels.hpp"
 
@@ -71,7 +72,7 @@ CARDEMO_MANIFOLD_INLINE typename L::Mask clipLanes(FacePoint<L>& s0, FacePoint<L
   return out0 & out1;
 }
 
-// The first pass's results for one lane group: the reference face and the pose seen from it.
+// The reference face of one lane group, and the pose seen from it.
 template <class L>
 struct ReferenceLanes {
   typename L::Mask empty;     // separated by more than max_separation: no manifold
