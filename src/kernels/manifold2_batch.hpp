@@ -23,10 +23,6 @@ class Manifold2Batch {
   [[nodiscard]] std::size_t size() const { return count_.size(); }
   /// Manifold i as manifoldObb2 returns it (points past its count are default-constructed).
   [[nodiscard]] Manifold2 manifold(std::size_t i) const;
-  /// Number of points of manifold i (0, 1 or 2).
-  [[nodiscard]] int count(std::size_t i) const { return count_[i]; }
-  /// Normal x of manifold i.
-  [[nodiscard]] double normalX(std::size_t i) const { return nx_[i]; }
   /// The kernels' view of the arrays.
   [[nodiscard]] batch_detail::Manifold2Out arrays();
 
