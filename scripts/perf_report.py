@@ -170,9 +170,9 @@ def narrow_tables(r, csv_rows):
     rows = []
     for query in ("overlapObb2", "collideObb2", "manifoldObb2", "manifoldObb2Batch",
                   "collidePolygons", "overlapObb3", "collideObb3"):
-        # The batched manifold runs on the same pairs as the one-pair query, against the same
-        # Box2D row (b2CollidePolygons one pair at a time: Box2D 2.4 has no batched form).
-        box2d_query = "manifoldObb2" if query == "manifoldObb2Batch" else query
+        # Every manifold and polygon row runs on the same pairs, against one Box2D row:
+        # b2CollidePolygons one pair at a time (Box2D 2.4 has no batched form), registered once.
+        box2d_query = "collidePolygons" if query.startswith("manifoldObb2") else query
         for size in sizes_in(r, f"narrow/{query}/"):
             ours = r.ns_per_item(f"narrow/{query}/{size}/cardemo")
             theirs = r.ns_per_item(f"narrow/{box2d_query}/{size}/box2d")
@@ -277,20 +277,30 @@ def broad_tables(r, csv_rows):
                    "status (<= 64 B)", "candidates (ours / Box2D)"], rows))
 
 
+def micros(x):
+    """A duration given in microseconds, in the unit that reads best."""
+    if x is None:
+        return "-"
+    if x >= 1000:
+        return fmt(x / 1000, " ms")
+    return fmt(x, " µs")
+
+
 def step_tables(r, csv_rows):
     rows = []
     for size in sizes_in(r, "step/lot/"):
-        names = [f"step/lot/{size}/{e}" for e in ("cardemo", "box2d", "box2d_bodies")]
-        ours, one_body, bodies = (r.ns_per_item(n) for n in names)
-        first = [r.counter(n, "first_step_us") for n in names]
+        names = [f"step/lot/{size}/{e}" for e in ("cardemo", "box2d", "box2d_bodies", "box2d_alone")]
+        ours, one_body, bodies, alone = (r.ns_per_item(n) for n in names)
+        first = [r.counter(n, "first_step_us") for n in names[:3]]
         contacts = [r.counter(n, "contacts_per_step") for n in names[:2]]
         narrow = [r.counter(n, "narrow_per_step") for n in names[:2]]
+        hits = r.counter(names[0], "hits")
         rows.append([size, fmt(ours, " ns"), fmt(one_body, " ns"), fmt(ratio(one_body, ours), "x"),
-                     fmt(bodies, " ns") if bodies else "not run", fmt(ratio(bodies, ours), "x")
-                     if bodies else "", " / ".join(fmt(f, " us") if f else "-" for f in first),
+                     fmt(alone, " ns"), fmt(bodies, " ns") if bodies else "not run",
+                     " / ".join(micros(f) for f in first),
                      fmt(r.counter(names[0], "near_share")),
                      " / ".join(fmt(c) for c in contacts), " / ".join(fmt(c) for c in narrow),
-                     fmt(r.counter(names[0], "hits")), verdict(ours, 200.0)])
+                     "n/a" if hits is None else f"{hits:.0f}", verdict(ours, 200.0)])
         csv_rows.append(["step", "lot", size, "ns/step", ours, one_body, ratio(one_body, ours),
                          200.0])
     return ("One player car driving 30 s (3,600 steps at 120 Hz) along a row of parked cars among "
@@ -299,16 +309,20 @@ def step_tables(r, csv_rows):
             "(`bench/suite/lot_drive.cpp`). World::step against b2World::Step(1/120, 8, 3) of the "
             "same scene in the two forms a Box2D user builds: one static body holding N fixtures, "
             "and one static body per car (run up to 100k cars: at 1M it walks a million bodies "
-            "a step). The Box2D car is a dynamic box placed at our car's pose before each step "
-            "and given its velocity over the step. Every row times steps 2-3,600; the first step "
+            "a step; no ratio is given for it, since its time mostly measures that walk and moved "
+            "by 4x between runs). The Box2D car is a dynamic box placed at our car's pose before "
+            "each step and given its velocity over the step. `car alone`: the same b2World::Step "
+            "loop with no parked car, so the part of Box2D's time that is its solver and "
+            "bookkeeping rather than collision (cardemo's step has no rigid-body solver: the car "
+            "is kinematic). Every row times steps 2-3,600; the first step "
             "(Box2D creates its contacts there) is timed apart (CPU time, one sample). near: share "
             "of steps ending within 1 m of a parked car; contacts and narrow tests are per step, "
             "cardemo / b2World one body (Box2D: touching contacts, and contacts in its list, each "
             "of which gets b2CollidePolygons).\n\n"
             "Reproduce: `build-perf/bench/cardemo_bench --benchmark_filter='^step/'`\n\n" +
-            table(["parked cars", "World::step", "b2World, 1 body", "ratio", "b2World, body per car",
-                   "ratio", "first step (ours / 1 body / per car)", "near", "contacts/step",
-                   "narrow tests/step", "hits", "status (<= 200 ns)"], rows))
+            table(["parked cars", "World::step", "b2World, 1 body", "ratio", "b2World, car alone",
+                   "b2World, body per car", "first step (ours / 1 body / per car)", "near",
+                   "contacts/step", "narrow tests/step", "hits", "status (<= 200 ns)"], rows))
 
 
 def load_tables(r, csv_rows):
@@ -360,13 +374,13 @@ def targets_table(r):
                                ("manifoldObb2", "1k", 10.0, "b2CollidePolygons"),
                                ("manifoldObb2", "1M", 20.0, "b2CollidePolygons")):
         ours = ns_pair(f"narrow/{query}/{size}/cardemo")
-        theirs = ns_pair(f"narrow/{query}/{size}/box2d")
+        theirs = ns_pair(f"narrow/{'collidePolygons' if b2 else query}/{size}/box2d")
         add(f"`{query}`, {size} pairs, one at a time", f"<= {t:g} ns", fmt(ours[0], " ns"),
             fmt(ours[1], " ns"), f"{times_text(theirs)} ({b2})" if b2 else "no equivalent",
             [verdict(x, t) for x in ours])
     for size, t in (("1k", 10.0), ("1M", 20.0)):
         ours = ns_pair(f"narrow/manifoldObb2Batch/{size}/cardemo")
-        theirs = ns_pair(f"narrow/manifoldObb2/{size}/box2d")
+        theirs = ns_pair(f"narrow/collidePolygons/{size}/box2d")
         add(f"`manifoldObb2Batch`, {size} pairs, all at once", f"<= {t:g} ns", fmt(ours[0], " ns"),
             fmt(ours[1], " ns"), f"{times_text(theirs)} (b2CollidePolygons, one at a time)",
             [verdict(x, t) for x in ours])
@@ -445,7 +459,7 @@ def machine_text(r):
     return "\n".join([
         f"- CPU: {model or platform.processor()}, {ctx.get('num_cpus', '?')} cores at "
         f"{ctx.get('mhz_per_cpu', '?')} MHz (as reported)" + (f", caches: {caches}" if caches else ""),
-        f"- Load average at the start of the run: {ctx.get('load_avg', '?')} (the machine is "
+        f"- Load average at the start of the run: {load_average(ctx)} (the machine is "
         f"shared; times are CPU time, the fastest of the repetitions)",
         f"- Build (from the benchmark's context): {ctx.get('compiler', '?')}, "
         f"{ctx.get('build_type', '?')}, `{ctx.get('cxx_flags', '?')}`; the AVX2 batch files "
@@ -456,9 +470,15 @@ def machine_text(r):
     ])
 
 
+def load_average(ctx):
+    """The 1, 5 and 15 minute load averages of the benchmark's context, to two decimals."""
+    load = ctx.get("load_avg")
+    return ", ".join(f"{x:.2f}" for x in load) if isinstance(load, list) else "?"
+
+
 def run_line(r):
     ctx = r.context
-    return (f"Run: {ctx.get('date', '?')}, load average at its start {ctx.get('load_avg', '?')}, "
+    return (f"Run: {ctx.get('date', '?')}, load average at its start {load_average(ctx)}, "
             f"{ctx.get('compiler', '?')} {ctx.get('build_type', '?')} `{ctx.get('cxx_flags', '?')}` "
             f"(from the benchmark's context); batch path {ctx.get('batch_path', '?')}, AVX-512 "
             f"available: {ctx.get('avx512_available', '?')}; CPU time, the fastest of the "

@@ -51,8 +51,8 @@ struct PairSet3 {
 
 /// `n` 2D pairs, about 45% overlapping. Deterministic for a given n.
 [[nodiscard]] const PairSet2& pairSet2(std::size_t n);
-/// One query box and `n` boxes around it, about 45% of them overlapping it; every tenth box is
-/// within 1e-5 m of touching it (either side).
+/// One query box and `n` boxes around it, about 45% of them overlapping it; a tenth of the boxes,
+/// picked at random, are within 1e-5 m of touching it (either side).
 [[nodiscard]] const PairSet2& batchSet2(std::size_t n);
 /// `n` 3D pairs, about 45% overlapping.
 [[nodiscard]] const PairSet3& pairSet3(std::size_t n);

@@ -1,12 +1,14 @@
 // Whole step: one player car driving along a row of parked cars (lot_drive.hpp) through
 // World::step among N parked cars, against b2World::Step of the same scene in the two forms a
 // Box2D user builds: one static body holding N fixtures (`box2d`), and one static body per car
-// (`box2d_bodies`). The Box2D car is a dynamic box placed at our car's pose before each step
-// (SetTransform) and given our car's velocity over that step, so it meets the same parked cars
-// even after Box2D's solver has pushed it elsewhere. Every row times the whole drive except its
-// first step (Box2D creates its contacts there), which is reported apart as the counter
-// `first_step_us`. `step/circling/N/cardemo` is World::step alone on the circling replay of
-// scripts/replay_speed.py (same scene, same keys), the like-for-like figure for `cardemo replay`.
+// (`box2d_bodies`); `box2d_alone` is the same b2World::Step with the car alone (no parked car), the
+// part of Box2D's time that is its solver and bookkeeping, not collision. The Box2D car is a
+// dynamic box placed at our car's pose before each step (SetTransform) and given our car's velocity
+// over that step, so it meets the same parked cars even after Box2D's solver has pushed it
+// elsewhere. Every row times the whole drive except its first step (Box2D creates its contacts
+// there), which is reported apart as the counter `first_step_us`. `step/circling/N/cardemo` is
+// World::step alone on the circling replay of scripts/replay_speed.py (same scene, same keys), the
+// like-for-like figure for `cardemo replay`.
 
 #include <benchmark/benchmark.h>
 #include <time.h>
@@ -172,12 +174,22 @@ b2Vec2 floatPoint(const Eigen::Vector2d& p) {
   return {static_cast<float>(p.x()), static_cast<float>(p.y())};
 }
 
+// How the b2World holds the parked cars.
+enum class B2Lot {
+  kOneBody,     // fixtures of one static body
+  kBodyPerCar,  // a static body each
+  kNone,        // none: the car alone
+};
+
 // The scene as a Box2D user builds it (float positions, SetAsBox, angle from the heading): the
 // parked cars as fixtures of one static body at the origin, or each as its own static body.
-b2Body* buildB2World(b2World& b2, const Scene& scene, bool body_per_car) {
+b2Body* buildB2World(b2World& b2, const Scene& scene, B2Lot form) {
+  const bool body_per_car = form == B2Lot::kBodyPerCar;
   b2BodyDef lot_def;
-  b2Body* lot = body_per_car ? nullptr : b2.CreateBody(&lot_def);
-  for (const ParkedCar& p : scene.parked) {
+  b2Body* lot = form == B2Lot::kOneBody ? b2.CreateBody(&lot_def) : nullptr;
+  const std::size_t parked = form == B2Lot::kNone ? 0 : scene.parked.size();
+  for (std::size_t i = 0; i < parked; ++i) {
+    const ParkedCar& p = scene.parked[i];
     b2PolygonShape polygon;
     const float hx = static_cast<float>(p.box.half.x());
     const float hy = static_cast<float>(p.box.half.y());
@@ -205,10 +217,10 @@ b2Body* buildB2World(b2World& b2, const Scene& scene, bool body_per_car) {
   return car;
 }
 
-void runBox2d(benchmark::State& s, std::size_t n, std::size_t frames, bool body_per_car) {
+void runBox2d(benchmark::State& s, std::size_t n, std::size_t frames, B2Lot form) {
   const StepCase& c = stepCase(n, frames);
   b2World b2(b2Vec2(0.0f, 0.0f));
-  b2Body* car = buildB2World(b2, c.scene, body_per_car);
+  b2Body* car = buildB2World(b2, c.scene, form);
   const float dt = static_cast<float>(1.0 / kHz);
   const auto drive = [&](const Motion& m) {
     car->SetTransform(b2Vec2(m.x, m.y), m.angle);
@@ -248,18 +260,25 @@ void registerSize(std::size_t n, const BenchConfig& config) {
       ->Iterations(iterations)
       ->Unit(benchmark::kNanosecond);
 #if defined(CARDEMO_HAVE_COMPARE)
-  benchmark::RegisterBenchmark((prefix + "box2d").c_str(),
-                               [n, frames](benchmark::State& s) { runBox2d(s, n, frames, false); })
+  benchmark::RegisterBenchmark(
+      (prefix + "box2d").c_str(),
+      [n, frames](benchmark::State& s) { runBox2d(s, n, frames, B2Lot::kOneBody); })
       ->Iterations(iterations)
       ->Unit(benchmark::kNanosecond);
   // A body per car makes b2World::Step walk N bodies a step (about 0.1 s at 1M cars, so 6 min
   // for the drive): that form runs up to 100k cars.
   if (n <= 100000) {
-    benchmark::RegisterBenchmark((prefix + "box2d_bodies").c_str(),
-                                 [n, frames](benchmark::State& s) { runBox2d(s, n, frames, true); })
+    benchmark::RegisterBenchmark(
+        (prefix + "box2d_bodies").c_str(),
+        [n, frames](benchmark::State& s) { runBox2d(s, n, frames, B2Lot::kBodyPerCar); })
         ->Iterations(iterations)
         ->Unit(benchmark::kNanosecond);
   }
+  benchmark::RegisterBenchmark(
+      (prefix + "box2d_alone").c_str(),
+      [n, frames](benchmark::State& s) { runBox2d(s, n, frames, B2Lot::kNone); })
+      ->Iterations(iterations)
+      ->Unit(benchmark::kNanosecond);
 #endif
 }
 
