@@ -1,7 +1,8 @@
-// Cost per pair at a distance from the world origin: cardemo's collideObb2 against Box2D's
-// b2CollidePolygons and b2TestOverlap (float world transforms, skin 0) on the same 1k random pairs
-// moved by 0, 1e3, 1e5 and 1e7 m. These are the verdicts `cardemo compare-sweep` holds to the
-// exact oracle; scripts/plot_cost_error.py puts this cost against that misclassification rate.
+// Cost per pair at a distance from the world origin, like for like: cardemo's overlapObb2 against
+// Box2D's b2TestOverlap (booleans), manifoldObb2 against b2CollidePolygons (contact manifolds), and
+// collideObb2 (depth and normal, no Box2D equivalent); Box2D with float world transforms, skin 0,
+// on the same 1k random pairs moved by 0, 1e3, 1e5 and 1e7 m. scripts/plot_cost_error.py puts
+// this cost against the misclassification rate that `cardemo compare-sweep` measures.
 
 #include <benchmark/benchmark.h>
 
@@ -9,6 +10,7 @@
 
 #include "bench_registry.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "kernels/manifold2.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
 #include "compare/box2d/box2d_shapes.hpp"
@@ -42,14 +44,32 @@ void overPairs(benchmark::State& state, const PerPair& per_pair) {
 }  // namespace
 
 void registerOffset(const BenchConfig& /*config*/) {
+  // Named offset/QUERY/OFFSET/ENGINE, each Box2D query under its cardemo like-for-like: the
+  // boolean b2TestOverlap beside overlapObb2, the manifold b2CollidePolygons beside manifoldObb2.
   for (const double offset : {0.0, 1e3, 1e5, 1e7}) {
     char label[32];
     std::snprintf(label, sizeof label, "%g", offset);
-    const std::string prefix = std::string("offset/collideObb2/") + label + "/";
-    benchmark::RegisterBenchmark((prefix + "cardemo").c_str(), [offset](benchmark::State& s) {
-      const PairSet2 p = movedPairs(offset);
-      overPairs(s, [&p](std::size_t i) { return collideObb2(p.a[i], p.b[i]).separation; });
-    });
+    const auto name = [&label](const char* query, const char* engine) {
+      return std::string("offset/") + query + "/" + label + "/" + engine;
+    };
+    benchmark::RegisterBenchmark(
+        name("overlapObb2", "cardemo").c_str(), [offset](benchmark::State& s) {
+          const PairSet2 p = movedPairs(offset);
+          overPairs(s, [&p](std::size_t i) { return overlapObb2(p.a[i], p.b[i]) ? 1.0 : 0.0; });
+        });
+    benchmark::RegisterBenchmark(
+        name("collideObb2", "cardemo").c_str(), [offset](benchmark::State& s) {
+          const PairSet2 p = movedPairs(offset);
+          overPairs(s, [&p](std::size_t i) { return collideObb2(p.a[i], p.b[i]).separation; });
+        });
+    benchmark::RegisterBenchmark(name("manifoldObb2", "cardemo").c_str(),
+                                 [offset](benchmark::State& s) {
+                                   const PairSet2 p = movedPairs(offset);
+                                   overPairs(s, [&p](std::size_t i) {
+                                     const Manifold2 m = manifoldObb2(p.a[i], p.b[i]);
+                                     return static_cast<double>(m.count) + m.normal.x();
+                                   });
+                                 });
 #if defined(CARDEMO_HAVE_COMPARE)
     const auto box2d = [offset](benchmark::State& s, bool gjk) {
       const PairSet2 p = movedPairs(offset);
@@ -70,10 +90,10 @@ void registerOffset(const BenchConfig& /*config*/) {
         });
       }
     };
-    benchmark::RegisterBenchmark((prefix + "box2d").c_str(),
-                                 [box2d](benchmark::State& s) { box2d(s, false); });
-    benchmark::RegisterBenchmark((prefix + "box2d_overlap").c_str(),
+    benchmark::RegisterBenchmark(name("overlapObb2", "box2d").c_str(),
                                  [box2d](benchmark::State& s) { box2d(s, true); });
+    benchmark::RegisterBenchmark(name("manifoldObb2", "box2d").c_str(),
+                                 [box2d](benchmark::State& s) { box2d(s, false); });
 #endif
   }
 }
