@@ -12,6 +12,9 @@ build="${CARDEMO_BUILD_DIR:-$root/build}"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCARDEMO_BUILD_TESTS=OFF \
   "${cardemo_launcher[@]}" >/dev/null
 cmake --build "$build" --target cardemo -j"$(nproc)"
+# The binary finds the bundled scenes, sounds and font next to itself only in a build folder inside
+# the repository; this one may be anywhere (CARDEMO_BUILD_DIR).
+export CARDEMO_ASSETS="${CARDEMO_ASSETS:-$root/assets}"
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$build/cardemo" play "$@"
 fi

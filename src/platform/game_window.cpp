@@ -103,6 +103,9 @@ std::string saveScreenshot(SDL_Renderer* renderer) {
   return "too many screenshots in this folder";
 }
 
+// No sound device is said once per process, not again for each scene the picker opens.
+bool audio_reported = false;
+
 // Mutable state of the running window (everything but the session and the flow).
 struct LoopState {
   bool quit = false;    // window closed: end the program
@@ -302,13 +305,13 @@ GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
   FixedStepClock clock(1.0 / hz, kMaxStepsPerFrame);
   Inputs in;
   PlayFlow flow;
-  LevelRun level(session.world(), bestScoresPath());
+  // A replay being watched shows the best score but never sets one: the player did not drive it.
+  LevelRun level(session.world(), bestScoresPath(), options.session.playback.empty());
   GameAudio audio(options.sounds_dir, options.mute);
   SoundMix sound;
   InputFrame last_input;
   // No sound is not an error: say so once, unless the player asked for silence (then on M).
-  bool audio_reported = false;
-  if (!options.mute && !audio.message().empty()) {
+  if (!options.mute && !audio.message().empty() && !audio_reported) {
     audio_reported = true;
     std::fprintf(stderr, "cardemo play: %s\n", audio.message().c_str());
   }
@@ -368,7 +371,7 @@ GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
       flow.restarted();
       over_reported = false;
       record_error_reported = false;
-      note = "attempt " + std::to_string(session.attempt());
+      note = "attempt " + std::to_string(session.sceneAttempt());
       status = std::max(status, reportRecordError(session, record_error_reported, note));
     }
     if (s.toggle_mute) {
@@ -403,6 +406,7 @@ GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
       flow.update(session.playingBack(), ended());
       if (flow.holding()) break;
     }
+    if (ended()) effects.idle(steps);
     if (const std::string warning = level.takeWarning(); !warning.empty()) {
       std::fprintf(stderr, "%s\n", warning.c_str());
     }
@@ -434,15 +438,14 @@ GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
     const Camera camera =
         rig.camera({w, h}, frozen ? 1.0 : clock.alpha(), s.zoom / kDefaultZoom, effects.shake());
     GoalView goal_view;
+    s.draw.goal = nullptr;
     if (level.challenge() != nullptr) {
       goal_view = {level.challenge(), level.best(), level.newBest(),
                    endPanelKeys(options.links, level.challenge()->parkedFrame().has_value())};
       s.draw.game_over_rows = runSummaryRows(session.world(), goal_view);
+      s.draw.goal = &goal_view;
     }
     drawFrame(canvas, session.world(), camera, box, s.draw);
-    if (level.challenge() != nullptr) {
-      drawGoalOverlay(canvas, session.world(), camera, box, goal_view);
-    }
     if (s.screenshot) {
       s.screenshot = false;
       note = saveScreenshot(renderer);

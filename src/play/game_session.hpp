@@ -1,6 +1,7 @@
 #pragma once
 /// One game: the World, restart, replay playback and recording, with no window and no clock.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -55,6 +56,11 @@ class GameSession {
   [[nodiscard]] std::int64_t playbackLeft() const;
   /// The attempt being played: first_attempt at the start, one more at each restart().
   [[nodiscard]] int attempt() const { return attempt_; }
+  /// The attempt's number at this scene, as the player counts: 1 at the start, one more at each
+  /// restart(), whatever earlier games counted (attempt() continues theirs, for the recordings).
+  [[nodiscard]] int sceneAttempt() const {
+    return attempt_ - std::max(1, config_.first_attempt) + 1;
+  }
   /// The file this attempt records to (empty when not recording).
   [[nodiscard]] const std::string& recordPath() const { return record_path_; }
   /// True when a recording is being written (not yet finished).

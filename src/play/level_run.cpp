@@ -4,7 +4,8 @@
 
 namespace cardemo {
 
-LevelRun::LevelRun(const World& world, std::string best_path) : best_path_(std::move(best_path)) {
+LevelRun::LevelRun(const World& world, std::string best_path, bool keeps_best)
+    : best_path_(std::move(best_path)), keeps_best_(keeps_best) {
   scene_name_ = world.scene().name;
   if (world.scene().goal && !best_path_.empty()) scores_ = loadBestScores(best_path_, warning_);
   restart(world);
@@ -31,6 +32,7 @@ bool LevelRun::observe(const World& world) {
 }
 
 void LevelRun::finish() {
+  if (!keeps_best_) return;
   if (const std::optional<ParkingScore> score = challenge_->score()) {
     if (scores_.offer(scene_name_, *score)) {
       new_best_ = true;

@@ -15,13 +15,15 @@ namespace cardemo {
 class LevelRun {
  public:
   /// Starts on `world`'s frame (which may already park the car); `best_path` is the best-scores
-  /// file (empty: scores not kept).
-  LevelRun(const World& world, std::string best_path);
+  /// file (empty: scores not kept). With `keeps_best` false (a replay being watched) the stored
+  /// best is shown but no run is ever offered to it or saved.
+  LevelRun(const World& world, std::string best_path, bool keeps_best = true);
 
   /// A fresh challenge for a restarted world (the best score stays).
   void restart(const World& world);
   /// Observes the world after a step. When this step parks the car, the score is offered to the
-  /// best scores and saved if better. Returns true on the step that ends the run.
+  /// best scores and saved if better (unless the run does not keep bests). Returns true on the
+  /// step that ends the run.
   bool observe(const World& world);
 
   /// The challenge, or null when the scene has no goal.
@@ -43,6 +45,7 @@ class LevelRun {
   void finish();  // offers a parked score to the best scores and saves them when it is better
   std::string scene_name_;
   std::string best_path_;
+  bool keeps_best_ = true;
   BestScores scores_;
   std::optional<ParkingChallenge> challenge_;
   std::optional<ParkingScore> best_before_;

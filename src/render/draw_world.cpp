@@ -1,9 +1,11 @@
 #include "render/draw_world.hpp"
 
 #include <cstdint>
+#include <string>
 
 #include "render/debug_overlay.hpp"
 #include "render/effects_layer.hpp"
+#include "render/goal_overlay.hpp"
 #include "render/hud.hpp"
 #include "render/world_layer.hpp"
 
@@ -17,9 +19,17 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
   if (options.effects != nullptr) drawDamageNumbers(canvas, camera, *options.effects, palette);
   drawHud(canvas, world, options);
   if (options.effects != nullptr) drawHealthPulse(canvas, world, *options.effects);
+  if (options.goal != nullptr) drawGoalOverlay(canvas, world, camera, player_box, *options.goal);
   if (world.gameOver())
     drawGameOver(canvas, world, camera, player_box, options.game_over_rows, options.game_over_keys);
-  if (options.help) drawHelp(canvas);
+  // Last, so that nothing covers them; the help panel carries PAUSED in its title.
+  const std::string banner =
+      !options.banner.empty() ? options.banner : (options.paused ? "PAUSED" : "");
+  if (options.help) {
+    drawHelp(canvas, banner);
+  } else {
+    drawBanner(canvas, banner);
+  }
 }
 
 Rgba parkedColor(const std::string& id, const Palette& palette) {

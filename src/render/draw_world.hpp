@@ -15,6 +15,7 @@
 namespace cardemo {
 
 class Effects;
+struct GoalView;
 
 /// What to draw besides the world itself.
 struct DrawOptions {
@@ -22,9 +23,9 @@ struct DrawOptions {
   bool debug_overlay = false;
   /// The F1 help panel listing every key.
   bool help = false;
-  /// Shows PAUSED.
+  /// Shows PAUSED (drawBanner; in the help panel's title while the help is shown).
   bool paused = false;
-  /// A large one-line message at the top instead of PAUSED (e.g. "YOUR TURN"); empty: none.
+  /// A large one-line message in place of PAUSED (e.g. "YOUR TURN"); empty: none.
   std::string banner;
   /// Frames per second, shown in the HUD with the debug overlay (0 hides it).
   double fps = 0.0;
@@ -46,6 +47,9 @@ struct DrawOptions {
   std::vector<std::pair<std::string, std::string>> game_over_rows;
   /// Keys line of the GAME OVER panel (the keys that work now); empty: "Enter restart    Esc quit".
   std::string game_over_keys;
+  /// A level's bay, timer and PARKED / TIME UP panel (drawGoalOverlay), drawn over the HUD and
+  /// under the help and the banner; null: no goal.
+  const GoalView* goal = nullptr;
 };
 
 /// Colours of the scene (shared by the window, the PNGs and the render tests).
@@ -90,7 +94,7 @@ struct Palette {
 [[nodiscard]] Rgba parkedColor(const std::string& id, const Palette& palette = {});
 
 /// Draws the whole frame: world (with the player drawn at `player_box`, which may be interpolated
-/// between two steps), then the HUD, help and overlay as `options` asks.
+/// between two steps), then the HUD, the goal, the end panel, help and banner as `options` asks.
 void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
                const DrawOptions& options, const Palette& palette = {});
 

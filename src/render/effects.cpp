@@ -80,6 +80,10 @@ void Effects::reset(const World& world) {
   observe(world);
 }
 
+void Effects::idle(int frames) {
+  if (frames > 0) frame_ += frames;
+}
+
 float Effects::fade(std::int64_t start, int frames) const {
   const std::int64_t age = frame_ - start;
   if (frames <= 0 || age < 0 || age >= frames) return 0.0f;

@@ -66,6 +66,9 @@ class Effects {
   void reset(const World& world);
   /// Takes in one simulated step: new hits, the car's motion, tyre marks.
   void observe(const World& world);
+  /// Lets `frames` frames pass with the World no longer stepped (the run has ended), so the last
+  /// hit's flash, shake, number and pulse fade as they do while driving.
+  void idle(int frames);
 
   /// Frame of the last observed step.
   [[nodiscard]] std::int64_t frame() const { return frame_; }

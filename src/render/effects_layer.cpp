@@ -77,6 +77,9 @@ void drawHealthPulse(Canvas& canvas, const World& world, const Effects& effects)
     // The health just lost, flashing white then red as it drains.
     fillRect(canvas, bar.top_left + Eigen::Vector2f{from, 0.0f}, {to - from, bar.size.y()},
              withAlpha({255, static_cast<std::uint8_t>(90 + 165 * p), 80}, 230.0 * p));
+    // Over the bar's text: write it again on top, or a yellow-white flash hides a yellow-white
+    // number.
+    drawHealthLabel(canvas, bar.top_left, bar.size, world.health(), max_health);
   }
   const float grow = 6.0f * p;
   const Eigen::Vector2f tl = bar.top_left - Eigen::Vector2f{grow, grow};

@@ -15,6 +15,8 @@ using hud_colors::kDim;
 using hud_colors::kPanel;
 using hud_colors::kText;
 constexpr Rgba kTrough{55, 58, 64};
+constexpr Rgba kBannerText{255, 220, 90, 255};
+constexpr Rgba kBannerBackdrop{12, 14, 18, 235};
 
 std::string format(const char* fmt, double v) {
   char buf[64];
@@ -92,6 +94,11 @@ void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen:
     fillRect(canvas, top_left, {static_cast<float>(size.x() * fraction), size.y()},
              healthColor(fraction));
   }
+  drawHealthLabel(canvas, top_left, size, health, max_health);
+}
+
+void drawHealthLabel(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,
+                     int health, int max_health) {
   const int h = std::max(8, static_cast<int>(size.y() * 0.72f));
   const std::string label = std::to_string(health) + " / " + std::to_string(max_health);
   const Eigen::Vector2f ts = canvas.textSize(label, h);
@@ -153,13 +160,22 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
                  static_cast<float>(vp.y()) - ts.y() - 12.0f * s},
                 hint, small, kDim);
   }
-  if (options.paused || !options.banner.empty()) {
-    const int big = px(30, s);
-    const std::string text = options.banner.empty() ? "PAUSED" : options.banner;
-    const Eigen::Vector2f ts = canvas.textSize(text, big);
-    textPanel(canvas, {0.5f * (static_cast<float>(vp.x()) - ts.x()) - pad, 14.0f * s},
-              {{text, {255, 220, 90, 255}}}, big, pad);
-  }
+}
+
+void drawBanner(Canvas& canvas, const std::string& text) {
+  if (text.empty()) return;
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
+  const float pad = 14.0f * s;
+  const int big = px(34, s);
+  const Eigen::Vector2f ts = canvas.textSize(text, big);
+  const Eigen::Vector2f box{ts.x() + 2.0f * pad, ts.y() + 2.0f * pad};
+  // A third of the way down: clear of the timer and the HUD panels at the top, and above the
+  // car, which the camera keeps near the centre.
+  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - box.x()),
+                           static_cast<float>(vp.y()) / 3.0f - 0.5f * box.y()};
+  fillRect(canvas, tl, box, kBannerBackdrop);
+  canvas.text(tl + Eigen::Vector2f{pad, pad}, text, big, kBannerText);
 }
 
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
@@ -200,7 +216,7 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   return keys;
 }
 
-void drawHelp(Canvas& canvas) {
+void drawHelp(Canvas& canvas, const std::string& note) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const int h = px(17, s);
@@ -219,7 +235,11 @@ void drawHelp(Canvas& canvas) {
   const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w),
                            0.5f * (static_cast<float>(vp.y()) - hgt)};
   fillRect(canvas, tl, {w, hgt}, {12, 14, 18, 225});
-  canvas.text(tl + Eigen::Vector2f{pad, pad}, "Keys", title_h, {255, 220, 90, 255});
+  canvas.text(tl + Eigen::Vector2f{pad, pad}, "Keys", title_h, kBannerText);
+  if (!note.empty()) {
+    const float nw = canvas.textSize(note, title_h).x();
+    canvas.text({tl.x() + w - pad - nw, tl.y() + pad}, note, title_h, kBannerText);
+  }
   float y = tl.y() + pad + title_h * 1.8f;
   for (const auto& [k, d] : helpKeys()) {
     canvas.text({tl.x() + pad, y}, k, h, {255, 220, 90, 255});

@@ -1,6 +1,6 @@
 #pragma once
-/// Screen-space overlays: the HUD (health bar, speed, hits, frame, FPS), PAUSED, the game-over
-/// panel and the F1 help panel.
+/// Screen-space overlays: the HUD (health bar, speed, hits, frame, FPS), the PAUSED banner, the
+/// game-over panel and the F1 help panel.
 
 #include <string>
 #include <vector>
@@ -31,6 +31,10 @@ struct HealthBarRect {
 void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,
                    int health, int max_health);
 
+/// The health bar's "health / max" text, light with a dark shadow (drawHealthBar draws it last).
+void drawHealthLabel(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,
+                     int health, int max_health);
+
 /// One row of a two-column table.
 struct HudRow {
   std::string label;  ///< Left, e.g. "Speed".
@@ -45,8 +49,12 @@ struct HudRow {
 float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
                 const std::vector<HudRow>& rows, int text_px);
 
-/// The HUD panel at the top left, the status line, PAUSED and the help hint.
+/// The HUD panel at the top left, the status line and the help hint.
 void drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
+
+/// A large one-line message (PAUSED, YOUR TURN) centred across the screen a third of the way down,
+/// on an opaque backdrop; drawn last, over the HUD and the level's timer. Empty text: nothing.
+void drawBanner(Canvas& canvas, const std::string& text);
 
 /// The game-over panel beside the car (never over it): time, hits and damage, or `summary_rows`
 /// when given (a level's run summary), and the keys line `keys` (default "Enter restart    Esc
@@ -58,7 +66,7 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
 /// Every key and what it does, as the help panel lists them.
 [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& helpKeys();
 
-/// The F1 help panel.
-void drawHelp(Canvas& canvas);
+/// The F1 help panel, with `note` (e.g. "PAUSED") at the right of its title row.
+void drawHelp(Canvas& canvas, const std::string& note = {});
 
 }  // namespace cardemo

@@ -104,9 +104,12 @@ TEST(GameSession, FirstAttemptContinuesTheCountOfEarlierGames) {
   GameSession session(std::move(config));
   EXPECT_EQ(session.attempt(), 3);
   EXPECT_EQ(session.recordPath(), third);
+  // The player counts the attempts at this scene from 1, whatever the earlier games counted.
+  EXPECT_EQ(session.sceneAttempt(), 1);
   for (int i = 0; i < 4; ++i) session.step({true, false, false, false});
   session.restart();
   EXPECT_EQ(session.attempt(), 4);
+  EXPECT_EQ(session.sceneAttempt(), 2);
   EXPECT_EQ(session.recordPath(), fourth);
   for (int i = 0; i < 2; ++i) session.step({});
   ASSERT_EQ(session.finishRecording(), "");

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "../sim/scene_builders.hpp"
 
@@ -68,6 +69,44 @@ TEST(LevelRun, ParkedScoreIsSavedAndKeptOnlyWhenBetter) {
     (void)run3.observe(w3);
   }
   EXPECT_FALSE(run3.newBest());
+  fs::remove_all(dir);
+}
+
+// A replay being watched parks the car, shows the stored best, and neither saves nor beats it.
+TEST(LevelRun, AReplayBeingWatchedNeverSetsABest) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("cardemo_levelrun_r_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  const std::string path = (dir / "best.json").string();
+  World world(rollIn());
+  LevelRun watched(world, path, /*keeps_best=*/false);
+  ASSERT_NE(watched.challenge(), nullptr);
+  EXPECT_TRUE(watched.over());  // parked at frame 0, as a played run would
+  EXPECT_FALSE(watched.newBest());
+  EXPECT_FALSE(fs::exists(path));
+
+  // A stored best (worse than this run) is shown and stays as it was.
+  BestScores stored;
+  ParkingScore slow;
+  slow.frames = 5000;
+  slow.seconds = 5000.0 / 120.0;
+  slow.damage = 40;
+  slow.stars = 1;
+  ASSERT_TRUE(stored.offer("roll-in", slow));
+  ASSERT_EQ(saveBestScores(path, stored), "");
+  const std::string before = bestScoresText(stored);
+  LevelRun again(world, path, false);
+  ASSERT_TRUE(again.best().has_value());
+  EXPECT_EQ(again.best()->frames, 5000);
+  EXPECT_FALSE(again.newBest());
+  again.restart(world);
+  EXPECT_FALSE(again.newBest());
+  std::ifstream in(path);
+  const std::string after{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(after, before);
+  // The same run played (the default) is a new best.
+  LevelRun played(world, path);
+  EXPECT_TRUE(played.newBest());
   fs::remove_all(dir);
 }
 

@@ -11,6 +11,7 @@
 #include "../sim/scene_builders.hpp"
 #include "recording_canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/hud.hpp"
 
 namespace cardemo {
 namespace {
@@ -189,6 +190,59 @@ TEST(Effects, FeedbackIsDrawnAfterAHitAndGoneLater) {
   white = 0;
   for (const auto& f : canvas.fills) white += f.color.r == 255 && f.color.g == 250 ? 1 : 0;
   EXPECT_EQ(white, 0u);
+}
+
+// A hit that ends the game: once nothing is stepped the window lets the effects idle, and the
+// last hit's pulse and number fade as they do while driving. At 0 the bar is the bare trough, and
+// while the pulse shows, the bar's text is written over it, in the light text colour.
+TEST(Effects, AfterTheLastHitTheBarEmptiesAndTheNumberFades) {
+  Scene scene = sceneWith({parkedCar("A", 12.0, 0.0, 90.0)});
+  scene.player.health = 3;
+  World world(std::move(scene));
+  Effects fx(world);
+  driveIntoCar(world, fx);
+  ASSERT_TRUE(world.gameOver());
+  ASSERT_EQ(world.health(), 0);
+  Camera camera;
+  camera.center = world.car().position;
+  camera.pixels_per_metre = 20.0;
+  DrawOptions options;
+  options.effects = &fx;
+  const HealthBarRect bar = healthBarRect(camera.viewport);
+  // Fills that lie inside the bar: the trough, plus the pulse's lost part while it shows.
+  const auto inBar = [&](const RecordingCanvas& c) {
+    std::vector<RecordingCanvas::Fill> out;
+    const Eigen::Vector2f lo = bar.top_left - Eigen::Vector2f{0.5f, 0.5f};
+    const Eigen::Vector2f hi = bar.top_left + bar.size + Eigen::Vector2f{0.5f, 0.5f};
+    for (const RecordingCanvas::Fill& f : c.fills) {
+      bool inside = true;
+      for (const Eigen::Vector2f& p : f.points) {
+        inside = inside && (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+      }
+      if (inside) out.push_back(f);
+    }
+    return out;
+  };
+  const std::string number = "-" + std::to_string(world.hits()[0].damage);
+  RecordingCanvas canvas(camera.viewport);
+  drawFrame(canvas, world, camera, world.carBox(), options);
+  EXPECT_TRUE(canvas.hasText(number));
+  ASSERT_EQ(inBar(canvas).size(), 2u);  // trough and the health just lost
+  const RecordingCanvas::Text* label = canvas.lastText("0 / 3");
+  ASSERT_NE(label, nullptr);
+  EXPECT_EQ(label->color, (Rgba{235, 238, 242}));
+  for (const RecordingCanvas::Fill& f : inBar(canvas)) EXPECT_LT(f.order, label->order);
+
+  fx.idle(fx.settings().number_frames);
+  EXPECT_EQ(fx.healthPulse(), 0.0f);
+  EXPECT_EQ(fx.playerFlash(), 0.0f);
+  EXPECT_EQ(fx.shake(), Eigen::Vector2f::Zero());
+  drawFrame(canvas, world, camera, world.carBox(), options);
+  EXPECT_FALSE(canvas.hasText(number));
+  const std::vector<RecordingCanvas::Fill> left = inBar(canvas);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_NEAR(left[0].width(), bar.size.x(), 1e-3f);  // the empty trough only
+  EXPECT_TRUE(canvas.hasText("0 / 3"));
 }
 
 TEST(Effects, ParkedColoursAreStableAndVaried) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "../sim/scene_builders.hpp"
 #include "recording_canvas.hpp"
 #include "render/draw_world.hpp"
@@ -146,6 +148,68 @@ TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
   ParkingChallenge d(*far.goal, 120.0, 100);
   d.observe(away);
   EXPECT_EQ(timerDetail(d), "par 12.0 s   left 60.0 s   bay 10.0 m");
+}
+
+// Bounding box of a fill, as (min, max) corners.
+std::pair<Eigen::Vector2f, Eigen::Vector2f> bounds(const RecordingCanvas::Fill& f) {
+  Eigen::Vector2f lo = f.points[0], hi = f.points[0];
+  for (const Eigen::Vector2f& p : f.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return {lo, hi};
+}
+
+// The fill drawn just before `text` (its panel or backdrop).
+const RecordingCanvas::Fill* backdropOf(const RecordingCanvas& canvas,
+                                        const RecordingCanvas::Text& text) {
+  const RecordingCanvas::Fill* found = nullptr;
+  for (const RecordingCanvas::Fill& f : canvas.fills) {
+    if (f.order < text.order && (found == nullptr || f.order > found->order)) found = &f;
+  }
+  return found;
+}
+
+// PAUSED in a level: drawn last, on its own opaque backdrop, clear of the timer panel at the top
+// centre (it used to be drawn under it); with the help shown, in the help panel's title.
+TEST(GoalOverlay, PausedIsDrawnLastAndClearOfTheTimer) {
+  const Scene scene = bayScene(10.0);
+  const World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  GoalView view;
+  view.challenge = &c;
+  DrawOptions options;
+  options.paused = true;
+  options.goal = &view;
+  const Camera camera = followCamera(world.carBox(), 12.0, {1280, 720});
+  RecordingCanvas canvas;
+  drawFrame(canvas, world, camera, world.carBox(), options);
+  const RecordingCanvas::Text* paused = canvas.lastText("PAUSED");
+  const RecordingCanvas::Text* timer = canvas.lastText("0.0 s");
+  ASSERT_NE(paused, nullptr);
+  ASSERT_NE(timer, nullptr);
+  EXPECT_EQ(paused->order, canvas.texts.back().order) << "something was drawn over PAUSED";
+  for (const RecordingCanvas::Fill& f : canvas.fills) EXPECT_LT(f.order, paused->order);
+  const RecordingCanvas::Fill* backdrop = backdropOf(canvas, *paused);
+  const RecordingCanvas::Fill* timer_panel = backdropOf(canvas, *timer);
+  ASSERT_NE(backdrop, nullptr);
+  ASSERT_NE(timer_panel, nullptr);
+  EXPECT_GE(backdrop->color.a, 200);
+  const auto [lo, hi] = bounds(*backdrop);
+  EXPECT_TRUE(paused->at.x() >= lo.x() && paused->at.y() >= lo.y() && paused->at.x() <= hi.x() &&
+              paused->at.y() <= hi.y());
+  const auto [tlo, thi] = bounds(*timer_panel);
+  EXPECT_TRUE(lo.y() > thi.y() || hi.y() < tlo.y() || lo.x() > thi.x() || hi.x() < tlo.x())
+      << "PAUSED's backdrop overlaps the timer panel";
+
+  options.help = true;
+  RecordingCanvas help;
+  drawFrame(help, world, camera, world.carBox(), options);
+  std::size_t count = 0;
+  for (const RecordingCanvas::Text& t : help.texts) count += t.text == "PAUSED" ? 1 : 0;
+  EXPECT_EQ(count, 1u);
+  ASSERT_NE(help.lastText("Keys"), nullptr);
+  ASSERT_NE(help.lastText("PAUSED"), nullptr);
+  EXPECT_GT(help.lastText("PAUSED")->order, help.lastText("Keys")->order);
+  EXPECT_FLOAT_EQ(help.lastText("PAUSED")->at.y(), help.lastText("Keys")->at.y());
 }
 
 TEST(GoalOverlay, TimerDetailSaysTimeUp) {

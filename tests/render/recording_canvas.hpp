@@ -15,6 +15,7 @@ class RecordingCanvas : public Canvas {
   struct Fill {
     std::vector<Eigen::Vector2f> points;  ///< Pixels.
     Rgba color;                           ///< Fill colour.
+    int order;                            ///< Place among the fills and texts, from 0.
     /// Mean of the points.
     [[nodiscard]] Eigen::Vector2f centroid() const {
       Eigen::Vector2f c = Eigen::Vector2f::Zero();
@@ -39,6 +40,7 @@ class RecordingCanvas : public Canvas {
     Eigen::Vector2f at;  ///< Top-left, pixels.
     std::string text;    ///< UTF-8.
     Rgba color;          ///< Colour.
+    int order;           ///< Place among the fills and texts, from 0.
   };
 
   /// An image call.
@@ -58,9 +60,10 @@ class RecordingCanvas : public Canvas {
     lines.clear();
     texts.clear();
     images.clear();
+    calls_ = 0;
   }
   void fillConvex(std::span<const Eigen::Vector2f> points, const Rgba& color) override {
-    fills.push_back({{points.begin(), points.end()}, color});
+    fills.push_back({{points.begin(), points.end()}, color, calls_++});
   }
   void line(const Eigen::Vector2f& a, const Eigen::Vector2f& b, float thickness,
             const Rgba& color) override {
@@ -68,7 +71,7 @@ class RecordingCanvas : public Canvas {
   }
   void text(const Eigen::Vector2f& top_left, std::string_view utf8, int,
             const Rgba& color) override {
-    texts.push_back({top_left, std::string(utf8), color});
+    texts.push_back({top_left, std::string(utf8), color, calls_++});
   }
   [[nodiscard]] bool hasImage(ImageId) const override { return with_images; }
   void image(ImageId id, const Eigen::Vector2f& center, float angle, const Eigen::Vector2f& size,
@@ -101,6 +104,13 @@ class RecordingCanvas : public Canvas {
     for (const Line& l : lines) n += l.color == color ? 1 : 0;
     return n;
   }
+  /// The last text call that contains `needle`, or null.
+  [[nodiscard]] const Text* lastText(const std::string& needle) const {
+    for (auto it = texts.rbegin(); it != texts.rend(); ++it) {
+      if (it->text.find(needle) != std::string::npos) return &*it;
+    }
+    return nullptr;
+  }
   /// True when some text call contains `needle`.
   [[nodiscard]] bool hasText(const std::string& needle) const {
     for (const Text& t : texts) {
@@ -118,6 +128,7 @@ class RecordingCanvas : public Canvas {
 
  private:
   Eigen::Vector2i size_;
+  int calls_ = 0;
 };
 
 }  // namespace cardemo::test
