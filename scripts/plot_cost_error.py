@@ -97,12 +97,17 @@ def main(argv):
         xs = [error[(verdict, o)] for o in OFFSETS]
         ys = [cost[(query, engine, o)] for o in OFFSETS]
         print(f"| {label} | " + " | ".join(f"{y:.1f} ns, {x:.2f} %" for x, y in zip(xs, ys)) + " |")
-        ax.plot(xs, ys, style, label=label)
-        # Offsets with the same error share one label (cardemo's are all at 0 %: four labels
-        # there would print over each other), placed at the group's highest point.
+        # Offsets with the same error share one label, placed at the group's highest point; a
+        # series whose offsets all share one error (cardemo's, all at 0 %) says so in the legend
+        # instead, since labels of several such series would print over each other.
         groups = {}
         for x, y, o in zip(xs, ys, OFFSETS):
             groups.setdefault(x, []).append((y, offset_label(o)))
+        if len(groups) == 1:
+            label += ", at " + ", ".join(offset_label(o) for o in OFFSETS) + " m"
+        ax.plot(xs, ys, style, label=label)
+        if len(groups) == 1:
+            continue
         for x, points in groups.items():
             text = ", ".join(label for _, label in points) + " m"
             ax.annotate(text, (x, max(y for y, _ in points)), textcoords="offset points",
