@@ -227,7 +227,8 @@ def batch_tables(r, csv_rows):
                              t if has_target else None])
     return ("One box against many (struct of arrays), per pair, CPU time, 64k boxes (no short "
             "sequence repeats, so the branch predictor cannot learn it) and 1M. A tenth of the boxes "
-            "(2D and 3D) lie within 1e-5 m of touching the query box (either side), as resting "
+            "(2D and 3D), picked at random, lie within 1e-5 m of touching the query box (either "
+            "side), as resting "
             "and grazing contacts do in the game; `sent on` is the share of pairs the boolean "
             "kernels' float pre-filters left to their double kernels, whose time is included (the "
             "3D one runs on AVX2 on the AVX-512 path too). "
@@ -265,8 +266,11 @@ def broad_tables(r, csv_rows):
             csv_rows.append(["broad-build", layout, size, "ns/car", bld, bldb, ratio(bldb, bld), None])
             csv_rows.append(["broad-memory", layout, size, "bytes/car", mem, memb, ratio(memb, mem),
                              64.0])
-    return ("UniformGrid against b2DynamicTree on the same parked-car AABBs. Query: a car-sized "
-            "box moving in 0.25 m steps through the lot (one query per step); build: per car; "
+    return ("UniformGrid against b2DynamicTree on the same parked-car AABBs, Box2D's tree built "
+            "by inserting them in a spatially coherent order (the lot in its row order, the random "
+            "layout in Morton order; the order is computed beforehand and not timed). Query: a "
+            "car-sized box moving in 0.25 m steps through the lot (one query per step; the path's "
+            "8,192 boxes are cycled, so it stays in cache at every lot size); build: per car; "
             "memory: UniformGrid::memoryBytes per car, and for Box2D the 2N-1 tree nodes it must "
             "hold at least. Candidates: mean ids returned per query (Box2D's boxes are fattened "
             "by 0.1 m, so it returns a few more). Targets: query <= 20 ns at 1M cars, <= 64 B "
