@@ -445,7 +445,8 @@ def box2d_package():
     except (OSError, subprocess.CalledProcessError):
         return ""
     # Box2D 2.4.1's own b2_version still reads 2.4.0 (b2_settings.cpp), so name the package too.
-    return f" (package libbox2d-dev {version})" if version else ""
+    return (f" (package libbox2d-dev {version}; 2.4.1's own b2_version still reads 2.4.0)"
+            if version else "")
 
 
 def machine_text(r):
