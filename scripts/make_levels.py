@@ -88,10 +88,10 @@ def car(i,x,y,h): return {"id":i,"x":r(x),"y":r(y),"heading_deg":h,"length":4.4,
 def line(a,b,w=0.12): return {"type":"line","from":[r(a[0]),r(a[1])],"to":[r(b[0]),r(b[1])],"width":w}
 def arrow(a,b): return {"type":"arrow","from":[r(a[0]),r(a[1])],"to":[r(b[0]),r(b[1])],"width":0.3}
 
-def scene(name, order, title, start, bay, goal, parked, obstacles, markings, bounds):
+def scene(name, order, title, task, start, bay, goal, parked, obstacles, markings, bounds):
     g={"bay":{"x":r(bay[0]),"y":r(bay[1]),"heading_deg":bay[2],"length":bay[3],"width":bay[4]}}
     g.update(goal)
-    return {"format":"cardemo-scene/1","name":name,"level":{"order":order,"title":title},
+    return {"format":"cardemo-scene/1","name":name,"level":{"order":order,"title":title,"task":task},
             "bounds":{"min":bounds[0],"max":bounds[1]},
             "player":{"x":r(start[0]),"y":r(start[1]),"heading_deg":0,"length":4.5,"width":1.8,"health":100,"max_speed":MAX_SPEED},
             "goal":g,"parked":parked,"obstacles":obstacles,"markings":markings}
@@ -139,7 +139,9 @@ def make1(S,B):
     mk=[line((bx-2.75,by+y),(bx+2.75,by+y)) for y in (-6.5,-3.9,-1.3,1.3,3.9,6.5)]
     mk.append(line((bx+2.75,by-6.5),(bx+2.75,by+6.5)))
     mk.append(arrow((S[0]+4,S[1]),(S[0]+8,S[1])))
-    return scene('level-1-straight',1,'Straight in',S,(bx,by,0,5.5,2.6),
+    return scene('level-1-straight',1,'Straight in',
+      'Drive straight into the bay ahead, between the two cars, and stop short of the wall',
+      S,(bx,by,0,5.5,2.6),
       {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
       parked,obstacles,mk,[[r(S[0]-6),by-10],[bx+6,by+10]])
 LEVEL1={'file':'level-1-straight','bay':(0.0,0.0),'make':make1,'comment':'Level 1: drive straight into the bay ahead and stop.',
@@ -152,7 +154,9 @@ def make2(S,B):
     obstacles=[{"id":"back-wall","points":box(bx,by+3.35,9.0,0.2)}]
     mk=[line((bx+x,by-2.75),(bx+x,by+2.75)) for x in (-6.75,-4.05,-1.35,1.35,4.05,6.75)]
     mk.append(arrow((S[0]-6,S[1]),(S[0]-2,S[1])))
-    return scene('level-2-reverse',2,'Reverse bay',S,(bx,by,270,5.5,2.6),
+    return scene('level-2-reverse',2,'Reverse bay',
+      'Drive past, then reverse into the bay between the cars so that you end facing out',
+      S,(bx,by,270,5.5,2.6),
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":90},
       parked,obstacles,mk,[[r(S[0]-14),r(S[1]-10)],[bx+12,by+5]])
 LEVEL2={'file':'level-2-reverse','bay':(0.0,5.0),'make':make2,'comment':'Level 2: drive past the bay, stop, reverse in on full left lock, straighten, stop.',
@@ -172,7 +176,9 @@ def make3(S,B):
         line((bx+2.2,by+3.8),(bx+4.2,by+3.8)),line((bx+6.2,by+3.8),(bx+8.2,by+3.8)),
         line((bx+10.2,by+3.8),(bx+12.2,by+3.8)),
         arrow((S[0]-4,S[1]),(S[0],S[1]))]
-    return scene('level-3-parallel',3,'Parallel parking',S,(bx,by,0,5.5,2.2),
+    return scene('level-3-parallel',3,'Parallel parking',
+      'Parallel park in the gap between the two cars, against the kerb',
+      S,(bx,by,0,5.5,2.2),
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":120},
       parked,obstacles,mk,[[bx-16,by-2.5],[bx+16,by+11]])
 LEVEL3={'file':'level-3-parallel','bay':(0.0,0.0),'make':make3,'comment':'Level 3: stop beside the front car, reverse on right lock, straighten, then left lock into the space.',
@@ -193,7 +199,9 @@ def make4(S,B):
     mk=[line((bx-inner,door),(bx+inner,door),0.2),
         line((bx,door-1.0),(bx,door-0.2),0.1),
         arrow((S[0]+1,S[1]-2.0),(S[0]+5,S[1]-2.0))]
-    return scene('level-4-garage',4,'Tight garage',S,(bx,by,90,5.25,2.5),
+    return scene('level-4-garage',4,'Tight garage',
+      'Turn into the garage (0.35 m to spare each side) and stop before its back wall',
+      S,(bx,by,90,5.25,2.5),
       {"position_tolerance":0.3,"heading_tolerance_deg":5,"max_speed":0.3,"par_time":14,"time_limit":90},
       parked,obstacles,mk,[[r(S[0]-10),r(S[1]-5)],[r(bx+9),r(back+1)]])
 LEVEL4={'file':'level-4-garage','bay':(0.0,0.0),'make':make4,'comment':'Level 4: follow the lane, turn in on full left lock, straighten on the centre line, stop short of the back wall.',

@@ -26,6 +26,7 @@ constexpr double kMaxGoalTime = 1e5;
 constexpr double kMaxHoldTime = 60.0;
 constexpr double kMaxLevelOrder = 1e4;
 constexpr std::size_t kMaxTitleBytes = 64;
+constexpr std::size_t kMaxTaskBytes = 100;
 constexpr double kMaxMarkingWidth = 10.0;
 constexpr std::string_view kFormat = "cardemo-scene/1";
 
@@ -363,7 +364,9 @@ class SceneReader {
 
   bool readLevel(const Node& n, LevelInfo& level) {
     const std::string path = "level";
-    if (!isKind(n, Kind::kObject, path) || !onlyKeys(n, {"order", "title"}, path)) return false;
+    if (!isKind(n, Kind::kObject, path) || !onlyKeys(n, {"order", "title", "task"}, path)) {
+      return false;
+    }
     const Node* order = required(n, "order", path);
     if (order == nullptr || !isKind(*order, Kind::kNumber, "level.order")) return false;
     if (std::floor(order->number) != order->number || !(order->number >= 1) ||
@@ -379,6 +382,15 @@ class SceneReader {
       return fail(title->line, "level.title: must be 1 to 64 bytes without control characters");
     }
     level.title = t;
+    if (const Node* task = n.find("task")) {
+      if (!isKind(*task, Kind::kString, "level.task")) return false;
+      const std::string& k = task->text;
+      // One line on screen: the window draws it on a single row, never wrapped.
+      if (k.empty() || k.size() > kMaxTaskBytes || std::any_of(k.begin(), k.end(), control)) {
+        return fail(task->line, "level.task: must be 1 to 100 bytes without control characters");
+      }
+      level.task = k;
+    }
     return true;
   }
 

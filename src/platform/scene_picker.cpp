@@ -20,14 +20,14 @@ std::vector<PickerRow> pickerRows(const std::vector<LevelEntry>& entries, const 
   std::vector<PickerRow> rows;
   for (const LevelEntry& e : entries) {
     if (e.free_drive) {
-      rows.push_back({e.title, "no goal"});
+      rows.push_back({e.title, "no goal", e.task});
       continue;
     }
     const ParkingScore* score = best.find(e.scene_name);
     rows.push_back({std::to_string(e.order) + "   " + e.title,
-                    score == nullptr
-                        ? std::string("not parked yet")
-                        : secondsText(score->seconds) + "  " + starsText(score->stars)});
+                    score == nullptr ? std::string("not parked yet")
+                                     : secondsText(score->seconds) + "  " + starsText(score->stars),
+                    e.task});
   }
   return rows;
 }

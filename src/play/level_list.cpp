@@ -26,15 +26,17 @@ std::vector<LevelEntry> listLevels(const std::string& assets_folder,
       continue;
     }
     if (!scene.value().level) continue;
-    levels.push_back({file.lexically_normal().string(), scene.value().level->title,
-                      scene.value().name, scene.value().level->order, false});
+    const LevelInfo& level = *scene.value().level;
+    levels.push_back({file.lexically_normal().string(), level.title, scene.value().name,
+                      level.order, false, level.task});
   }
   std::sort(levels.begin(), levels.end(), [](const LevelEntry& a, const LevelEntry& b) {
     return std::tie(a.order, a.title, a.path) < std::tie(b.order, b.title, b.path);
   });
   const fs::path lot = fs::path(assets_folder) / "scenes" / "parking-lot.json";
   if (fs::is_regular_file(lot, ec)) {
-    levels.push_back({lot.lexically_normal().string(), "Free drive", "parking-lot", 0, true});
+    levels.push_back({lot.lexically_normal().string(), "Free drive", "parking-lot", 0, true,
+                      "Drive anywhere in the lot: no bay, no timer"});
   }
   return levels;
 }

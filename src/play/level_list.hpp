@@ -15,6 +15,7 @@ struct LevelEntry {
   std::string scene_name;   ///< The scene's `name` (the key of its best score).
   int order = 0;            ///< `level.order`; 0 for free drive.
   bool free_drive = false;  ///< The free-drive lot (no goal).
+  std::string task;         ///< `level.task`, shown under the title when selected (may be empty).
 };
 
 /// The scenes with a `level` object in `ASSETS/scenes/levels/*.json`, sorted by order, then title,

@@ -20,8 +20,8 @@ struct CameraRigSettings {
   double zoom_time_s = 0.6;         ///< Time constant of the speed zoom, seconds.
   double zoom_out_per_mps = 0.018;  ///< Zoom is divided by 1 + this x speed (m/s).
   double min_speed_zoom = 0.55;     ///< The speed zoom never goes below this factor.
-  double min_fit_ppm = 9.0;         ///< The fitted zoom is raised to at least this (cars stay
-                                    ///< readable on big lots), pixels per metre.
+  double min_fit_ppm = 24.0;        ///< The fitted zoom is raised to at least this (on big lots
+                                    ///< a 4.5 m car stays 108 px long), pixels per metre.
   double max_fit_ppm = 40.0;        ///< and lowered to at most this, pixels per metre.
   double fit_margin = 1.04;         ///< The fitted view is this much larger than the scene.
 };

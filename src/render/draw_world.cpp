@@ -1,6 +1,7 @@
 #include "render/draw_world.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "render/debug_overlay.hpp"
@@ -17,16 +18,19 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
   drawWorldLayer(canvas, world, camera, player_box, options, palette);
   if (options.debug_overlay) drawDebugOverlay(canvas, world, camera);
   if (options.effects != nullptr) drawDamageNumbers(canvas, camera, *options.effects, palette);
-  drawHud(canvas, world, options);
+  const Eigen::Vector2f hud = drawHud(canvas, world, options);
   if (options.effects != nullptr) drawHealthPulse(canvas, world, *options.effects);
-  if (options.goal != nullptr) drawGoalOverlay(canvas, world, camera, player_box, *options.goal);
+  if (options.goal != nullptr) {
+    drawGoalOverlay(canvas, world, camera, player_box, *options.goal, hud);
+  }
   if (world.gameOver())
     drawGameOver(canvas, world, camera, player_box, options.game_over_rows, options.game_over_keys);
   // Last, so that nothing covers them; the help panel carries PAUSED in its title.
   const std::string banner =
       !options.banner.empty() ? options.banner : (options.paused ? "PAUSED" : "");
   if (options.help) {
-    drawHelp(canvas, banner);
+    const std::optional<LevelInfo>& level = world.scene().level;
+    drawHelp(canvas, banner, level ? level->task : std::string());
   } else {
     drawBanner(canvas, banner);
   }

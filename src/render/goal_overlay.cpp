@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "render/end_panel.hpp"
@@ -26,7 +27,8 @@ std::string scoreText(const ParkingScore& s) {
   return secondsText(s.seconds) + "  " + starsText(s.stars);
 }
 
-void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
+// Returns the bottom of the timer panel, pixels.
+float drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const int big = static_cast<int>(std::lround(26.0f * s));
@@ -42,6 +44,79 @@ void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   fillRect(canvas, tl, {w, h}, kPanel);
   canvas.text({tl.x() + 0.5f * (w - ts.x()), tl.y() + pad}, time, big, kText);
   canvas.text({tl.x() + 0.5f * (w - ds.x()), tl.y() + pad * 1.2f + ts.y()}, detail, small, kDim);
+  return tl.y() + h;
+}
+
+// Screen rectangle (min, max) around a world box.
+std::pair<Eigen::Vector2f, Eigen::Vector2f> screenRect(const Camera& camera, const Obb2& box) {
+  Eigen::Vector2f lo{1e30f, 1e30f};
+  Eigen::Vector2f hi{-1e30f, -1e30f};
+  for (const Eigen::Vector2f& p : projectObb(camera, box)) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return {lo, hi};
+}
+
+// Area of the rectangle [at, at + size] that the rectangles `avoid` cover (overlaps summed).
+float coveredArea(const Eigen::Vector2f& at, const Eigen::Vector2f& size,
+                  const std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>>& avoid) {
+  float area = 0.0f;
+  for (const auto& [lo, hi] : avoid) {
+    const Eigen::Vector2f a = lo.cwiseMax(at);
+    const Eigen::Vector2f b = hi.cwiseMin(at + size);
+    if (b.x() > a.x() && b.y() > a.y()) area += (b.x() - a.x()) * (b.y() - a.y());
+  }
+  return area;
+}
+
+// The level's title and task for the first kTaskSeconds of an attempt, centred across the screen
+// under the timer (and the HUD panel), or above the status line when the car or the bay is there;
+// fades out over its last half second.
+void drawTaskPanel(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
+                   const Goal& goal, float timer_bottom, const Eigen::Vector2f& hud_corner) {
+  const std::optional<LevelInfo>& level = world.scene().level;
+  if (!level || level->task.empty()) return;
+  const double left = kTaskSeconds - static_cast<double>(world.frame()) / world.settings().hz;
+  if (left <= 0.0) return;
+  const float fade = static_cast<float>(std::min(1.0, left / 0.5));
+  const auto faded = [fade](Rgba c) {
+    c.a = static_cast<std::uint8_t>(std::lround(static_cast<float>(c.a) * fade));
+    return c;
+  };
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
+  const float pad = 12.0f * s;
+  const float gap = 10.0f * s;
+  const int head = static_cast<int>(std::lround(15.0f * s));
+  const std::string heading = "Level " + std::to_string(level->order) + ": " + level->title;
+  // Shrunk to fit a narrow window: the task is one line.
+  int text = static_cast<int>(std::lround(22.0f * s));
+  const float room = static_cast<float>(vp.x()) - 2.0f * (gap + pad);
+  const float natural = canvas.textSize(level->task, text).x();
+  if (natural > room && natural > 0.0f) {
+    text = std::max(8, static_cast<int>(static_cast<float>(text) * room / natural));
+  }
+  const Eigen::Vector2f hs = canvas.textSize(heading, head);
+  const Eigen::Vector2f ts = canvas.textSize(level->task, text);
+  const Eigen::Vector2f size{std::max(hs.x(), ts.x()) + 2.0f * pad,
+                             hs.y() + ts.y() + 0.4f * pad + 2.0f * pad};
+  const float x = 0.5f * (static_cast<float>(vp.x()) - size.x());
+  // Above the status line at the bottom left (its height as drawHud sizes it).
+  const float status_top = static_cast<float>(vp.y()) - 12.0f * s - 1.3f * 14.0f * s - 10.0f * s;
+  const std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>> avoid{
+      screenRect(camera, player_box), screenRect(camera, bayBox(goal))};
+  // A wide panel reaches under the HUD panel at the top left: it goes below both.
+  Eigen::Vector2f at{
+      x, (x < hud_corner.x() ? std::max(timer_bottom, hud_corner.y()) : timer_bottom) + gap};
+  const Eigen::Vector2f low{x, status_top - gap - size.y()};
+  if (coveredArea(at, size, avoid) > 0.0f &&
+      coveredArea(low, size, avoid) < coveredArea(at, size, avoid)) {
+    at = low;
+  }
+  fillRect(canvas, at, size, faded({12, 14, 18, 225}));
+  canvas.text(at + Eigen::Vector2f{pad, pad}, heading, head, faded(kTarget));
+  canvas.text({at.x() + pad, at.y() + pad + hs.y() + 0.4f * pad}, level->task, text, faded(kText));
 }
 
 }  // namespace
@@ -117,7 +192,8 @@ std::optional<Eigen::Vector2f> edgeAnchor(const Eigen::Vector2i& viewport,
 }
 
 void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
-                     const Obb2& player_box, const GoalView& view) {
+                     const Obb2& player_box, const GoalView& view,
+                     const Eigen::Vector2f& hud_corner) {
   const ParkingChallenge& c = *view.challenge;
   const Goal& goal = c.goal();
   const float s = hudScale(canvas.size());
@@ -138,7 +214,8 @@ void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
     fillRect(canvas, label - Eigen::Vector2f{4.0f, 2.0f}, ts + Eigen::Vector2f{8.0f, 4.0f}, kPanel);
     canvas.text(label, text, h, kTarget);
   }
-  drawTimer(canvas, c);
+  const float timer_bottom = drawTimer(canvas, c);
+  if (!c.over()) drawTaskPanel(canvas, world, camera, player_box, goal, timer_bottom, hud_corner);
 
   if (c.parkedFrame()) {
     drawEndPanel(canvas, camera, player_box,

@@ -15,6 +15,9 @@
 
 namespace cardemo {
 
+/// Seconds of play at the start of an attempt during which a level's task is shown.
+inline constexpr double kTaskSeconds = 4.0;
+
 /// What the overlay shows besides the world.
 struct GoalView {
   const ParkingChallenge* challenge = nullptr;  ///< The run's challenge (required).
@@ -45,9 +48,12 @@ struct GoalView {
 /// while the car is in the bay; then what ended the run.
 [[nodiscard]] std::string timerDetail(const ParkingChallenge& challenge);
 
-/// Draws the bay outline, the off-screen arrow with the distance, the timer, and the end panel
-/// when the car has parked or the time is up.
+/// Draws the bay outline, the off-screen arrow with the distance, the timer, the level's task
+/// (`level.task`, for the first kTaskSeconds of play, clear of the car, the bay and the HUD panel
+/// whose bottom-right corner is `hud_corner` when it can be), and the end panel when the car has
+/// parked or the time is up.
 void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
-                     const Obb2& player_box, const GoalView& view);
+                     const Obb2& player_box, const GoalView& view,
+                     const Eigen::Vector2f& hud_corner = Eigen::Vector2f::Zero());
 
 }  // namespace cardemo

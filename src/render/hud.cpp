@@ -113,7 +113,7 @@ HealthBarRect healthBarRect(const Eigen::Vector2i& viewport) {
   return {{12.0f * s + pad, 12.0f * s + pad}, {240.0f * s, 22.0f * s}};
 }
 
-void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
+Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const float pad = 10.0f * s;
@@ -140,10 +140,9 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   const Eigen::Vector2f origin = bar.top_left - Eigen::Vector2f{pad, pad};
   // One panel behind both the bar and the table.
   const float row = static_cast<float>(h) * 1.3f;
-  fillRect(canvas, origin,
-           {bar_size.x() + 2.0f * pad,
-            bar_size.y() + pad * 2.5f + row * static_cast<float>(rows.size())},
-           kPanel);
+  const Eigen::Vector2f panel{bar_size.x() + 2.0f * pad,
+                              bar_size.y() + pad * 2.5f + row * static_cast<float>(rows.size())};
+  fillRect(canvas, origin, panel, kPanel);
   drawHealthBar(canvas, bar.top_left, bar_size, world.health(), world.scene().player.health);
   drawTable(canvas, origin + Eigen::Vector2f{pad, pad * 1.8f + bar_size.y()}, bar_size.x(), rows,
             h);
@@ -160,6 +159,7 @@ void drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
                  static_cast<float>(vp.y()) - ts.y() - 12.0f * s},
                 hint, small, kDim);
   }
+  return origin + panel;
 }
 
 void drawBanner(Canvas& canvas, const std::string& text) {
@@ -216,7 +216,7 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   return keys;
 }
 
-void drawHelp(Canvas& canvas, const std::string& note) {
+void drawHelp(Canvas& canvas, const std::string& note, const std::string& task) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const int h = px(17, s);
@@ -230,8 +230,11 @@ void drawHelp(Canvas& canvas, const std::string& note) {
   }
   const float gap = 24.0f * s;
   const float pad = 22.0f * s;
-  const float w = key_w + gap + desc_w + 2.0f * pad;
-  const float hgt = title_h * 1.8f + row * static_cast<float>(helpKeys().size()) + 2.0f * pad;
+  const std::string task_line = task.empty() ? std::string() : "Task: " + task;
+  const float task_h = task.empty() ? 0.0f : 2.0f * row;
+  const float w = std::max(key_w + gap + desc_w, canvas.textSize(task_line, h).x()) + 2.0f * pad;
+  const float hgt =
+      title_h * 1.8f + task_h + row * static_cast<float>(helpKeys().size()) + 2.0f * pad;
   const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w),
                            0.5f * (static_cast<float>(vp.y()) - hgt)};
   fillRect(canvas, tl, {w, hgt}, {12, 14, 18, 225});
@@ -241,6 +244,10 @@ void drawHelp(Canvas& canvas, const std::string& note) {
     canvas.text({tl.x() + w - pad - nw, tl.y() + pad}, note, title_h, kBannerText);
   }
   float y = tl.y() + pad + title_h * 1.8f;
+  if (!task.empty()) {
+    canvas.text({tl.x() + pad, y}, task_line, h, kText);
+    y += task_h;
+  }
   for (const auto& [k, d] : helpKeys()) {
     canvas.text({tl.x() + pad, y}, k, h, {255, 220, 90, 255});
     canvas.text({tl.x() + pad + key_w + gap, y}, d, h, kText);

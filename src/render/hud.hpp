@@ -49,8 +49,9 @@ struct HudRow {
 float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
                 const std::vector<HudRow>& rows, int text_px);
 
-/// The HUD panel at the top left, the status line and the help hint.
-void drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
+/// The HUD panel at the top left, the status line and the help hint. Returns the bottom-right
+/// corner of the panel, pixels.
+Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
 
 /// A large one-line message (PAUSED, YOUR TURN) centred across the screen a third of the way down,
 /// on an opaque backdrop; drawn last, over the HUD and the level's timer. Empty text: nothing.
@@ -66,7 +67,8 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
 /// Every key and what it does, as the help panel lists them.
 [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& helpKeys();
 
-/// The F1 help panel, with `note` (e.g. "PAUSED") at the right of its title row.
-void drawHelp(Canvas& canvas, const std::string& note = {});
+/// The F1 help panel, with `note` (e.g. "PAUSED") at the right of its title row and the level's
+/// `task`, when given, above the keys.
+void drawHelp(Canvas& canvas, const std::string& note = {}, const std::string& task = {});
 
 }  // namespace cardemo

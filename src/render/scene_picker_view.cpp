@@ -15,6 +15,7 @@ using hud_colors::kDim;
 using hud_colors::kText;
 constexpr Rgba kSelected{70, 110, 170, 255};
 constexpr Rgba kTitle{255, 214, 70, 255};
+constexpr Rgba kTask{225, 232, 245, 255};
 
 }  // namespace
 
@@ -34,22 +35,32 @@ void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int sel
 
   float title_w = 0.0f;
   float detail_w = 0.0f;
+  float task_w = 0.0f;
   for (const PickerRow& r : rows) {
     title_w = std::max(title_w, canvas.textSize(r.title, text).x());
     detail_w = std::max(detail_w, canvas.textSize(r.detail, text).x());
+    task_w = std::max(task_w, canvas.textSize(r.task, small).x());
   }
   const float pad = 14.0f * s;
-  const float width = title_w + 3.0f * static_cast<float>(text) + detail_w + 2.0f * pad;
+  // As wide as the widest task too, so that selecting a row never changes the list's width.
+  const float width =
+      std::max(title_w + 3.0f * static_cast<float>(text) + detail_w, task_w) + 2.0f * pad;
   const float row_h = 1.8f * static_cast<float>(text);
+  const float task_h = 1.6f * static_cast<float>(small);
   const float left = cx - 0.5f * width;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const bool sel = static_cast<int>(i) == selected;
-    if (sel) fillRect(canvas, {left, y}, {width, row_h}, kSelected);
+    const bool task = sel && !rows[i].task.empty();
+    if (sel) fillRect(canvas, {left, y}, {width, row_h + (task ? task_h : 0.0f)}, kSelected);
     const float ty = y + 0.5f * (row_h - static_cast<float>(text) * 1.15f);
     canvas.text({left + pad, ty}, rows[i].title, text, kText);
     const float dw = canvas.textSize(rows[i].detail, text).x();
     canvas.text({left + width - pad - dw, ty}, rows[i].detail, text, sel ? kText : kDim);
     y += row_h;
+    if (task) {
+      canvas.text({left + pad, y - 0.05f * row_h}, rows[i].task, small, kTask);
+      y += task_h;
+    }
   }
   const std::string keys = "Up / Down or W / S: choose     Enter: play     Esc: quit";
   const Eigen::Vector2f ks = canvas.textSize(keys, small);

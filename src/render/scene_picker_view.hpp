@@ -12,9 +12,11 @@ namespace cardemo {
 struct PickerRow {
   std::string title;   ///< e.g. "1  Straight in".
   std::string detail;  ///< e.g. the best score, right-aligned.
+  std::string task;    ///< What to do there, shown under the title while selected (may be empty).
 };
 
-/// Draws the picker: a title, the rows with `selected` highlighted, and the keys.
+/// Draws the picker: a title, the rows with `selected` highlighted (with its task under its title),
+/// and the keys.
 void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int selected);
 
 }  // namespace cardemo

@@ -62,6 +62,7 @@ struct Goal {
 struct LevelInfo {
   int order = 1;      ///< Position in the picker, 1 first.
   std::string title;  ///< Shown in the picker.
+  std::string task;   ///< What to do, one line for the player (empty: none given).
 };
 
 /// A painted mark on the ground: drawn, never collides (`markings` in the scene file).

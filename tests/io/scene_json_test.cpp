@@ -520,6 +520,7 @@ TEST(SceneJsonGoal, FullGoalParsesIntoTheRightValues) {
   ASSERT_TRUE(s.level.has_value());
   EXPECT_EQ(s.level->order, 2);
   EXPECT_EQ(s.level->title, "Reverse bay");
+  EXPECT_EQ(s.level->task, "");  // optional
   ASSERT_EQ(s.markings.size(), 2u);
   EXPECT_EQ(s.markings[0].kind, Marking::Kind::kLine);
   EXPECT_EQ(s.markings[0].from, Eigen::Vector2d(18.7, -7.75));
@@ -667,6 +668,38 @@ TEST(SceneJsonLevelErrors, TitleMustBeShortPrintableText) {
                       "level.title: must be 1 to 64"));
   EXPECT_TRUE(
       failsAt(parseSampleScene(goalWith("\"order\": 2, ", "")), 31, "level: missing \"order\""));
+}
+
+std::string levelWithTask(std::string_view task_json) {
+  return goalWith("\"title\": \"Reverse bay\"",
+                  "\"title\": \"Reverse bay\", \"task\": " + std::string(task_json));
+}
+
+TEST(SceneJsonLevel, TaskIsReadUpTo100Bytes) {
+  const Parsed<Scene> p = parseSampleScene(levelWithTask("\"Reverse into the bay, facing out\""));
+  ASSERT_TRUE(p.ok()) << p.error().toString();
+  EXPECT_EQ(p.value().level->task, "Reverse into the bay, facing out");
+  const std::string longest(100, 'x');
+  const Parsed<Scene> q = parseSampleScene(levelWithTask("\"" + longest + "\""));
+  ASSERT_TRUE(q.ok()) << q.error().toString();
+  EXPECT_EQ(q.value().level->task, longest);
+}
+
+TEST(SceneJsonLevelErrors, TaskMustBeShortPrintableText) {
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(levelWithTask("42")), 31, "level.task: expected a string, found"));
+  EXPECT_TRUE(
+      failsAt(parseSampleScene(levelWithTask("[\"a\"]")), 31, "level.task: expected a string"));
+  for (const std::string& bad :
+       {std::string("\"\""), "\"" + std::string(101, 'x') + "\"", std::string("\"two\\nlines\"")}) {
+    EXPECT_TRUE(failsAt(parseSampleScene(levelWithTask(bad)), 31,
+                        "level.task: must be 1 to 100 bytes without control characters"))
+        << bad;
+  }
+  const Parsed<Scene> p = parseSampleScene(levelWithTask("\"" + std::string(101, 'x') + "\""));
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().toString(),
+            "lot.json:31: level.task: must be 1 to 100 bytes without control characters");
 }
 
 TEST(SceneJsonMarkingErrors, UnknownTypeMissingPointAndDegenerate) {

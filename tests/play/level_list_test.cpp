@@ -32,15 +32,19 @@ TEST(LevelList, BundledLevelsInOrderThenFreeDrive) {
     EXPECT_EQ(e[static_cast<std::size_t>(i)].order, i + 1);
     EXPECT_FALSE(e[static_cast<std::size_t>(i)].free_drive);
   }
+  // Every level says what to do (the picker shows it under the selected title).
+  for (const LevelEntry& level : e) EXPECT_FALSE(level.task.empty()) << level.title;
+  EXPECT_NE(e[1].task.find("reverse into the bay"), std::string::npos) << e[1].task;
+  EXPECT_NE(e[1].task.find("facing out"), std::string::npos) << e[1].task;
   EXPECT_TRUE(e[4].free_drive);
   EXPECT_EQ(e[4].title, "Free drive");
   EXPECT_NE(e[4].path.find("parking-lot.json"), std::string::npos);
 }
 
 TEST(LevelList, NextLevelStopsAtTheLastLevelAndNeverLeadsToFreeDrive) {
-  const std::vector<LevelEntry> e{{"a.json", "A", "a", 1, false},
-                                  {"b.json", "B", "b", 2, false},
-                                  {"lot.json", "Free drive", "parking-lot", 0, true}};
+  const std::vector<LevelEntry> e{{"a.json", "A", "a", 1, false, "Park"},
+                                  {"b.json", "B", "b", 2, false, ""},
+                                  {"lot.json", "Free drive", "parking-lot", 0, true, "Drive"}};
   EXPECT_EQ(nextLevel(e, 0), std::optional<std::size_t>(1));
   EXPECT_EQ(nextLevel(e, 1), std::nullopt);  // the last level: free drive is not "next"
   EXPECT_EQ(nextLevel(e, 2), std::nullopt);  // free drive has no next level

@@ -146,5 +146,18 @@ TEST(CameraRig, BaseZoomIsFittedToTheSceneWithinLimits) {
   EXPECT_EQ(CameraRig(World(std::move(big)), {1280, 720}).baseZoom(), s.min_fit_ppm);
 }
 
+// The free-drive lot (120 m x 80 m) fits the window at 9 px/m, where a car is 40 px long: the
+// rig starts closer, at the levels' scale (the + and - keys still zoom from there).
+TEST(CameraRig, BigLotStartsWithCarsAbout100PixelsLong) {
+  Scene lot = sceneWith({});
+  lot.bounds = Aabb2{{-60.0, -40.0}, {60.0, 40.0}};
+  const World world(std::move(lot));
+  for (const Eigen::Vector2i& vp : {Eigen::Vector2i(1280, 720), Eigen::Vector2i(1280, 800)}) {
+    const Camera c = CameraRig(world, vp).camera(vp);
+    EXPECT_GE(world.scene().player.length * c.pixels_per_metre, 100.0) << vp.transpose();
+    EXPECT_LT(fittedZoom(*cameraBounds(world.scene()), vp, 1.04), c.pixels_per_metre);
+  }
+}
+
 }  // namespace
 }  // namespace cardemo

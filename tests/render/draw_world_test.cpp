@@ -412,6 +412,17 @@ TEST(Hud, HelpPanelListsEveryKey) {
   }
 }
 
+TEST(Hud, HelpPanelShowsTheLevelsTask) {
+  Scene scene = sceneWith({});
+  scene.level = LevelInfo{2, "Reverse bay", "Reverse into the bay, facing out"};
+  const World level(scene);
+  Camera camera;
+  DrawOptions options;
+  options.help = true;
+  EXPECT_TRUE(drawn(level, camera, options).hasText("Task: Reverse into the bay, facing out"));
+  EXPECT_FALSE(drawn(World(sceneWith({})), camera, options).hasText("Task:"));
+}
+
 TEST(Hud, GameOverPanelListsTheKeysItIsGiven) {
   World world = crashedWorld();
   ASSERT_TRUE(world.gameOver());

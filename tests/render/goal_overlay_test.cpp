@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <utility>
 
 #include "../sim/scene_builders.hpp"
 #include "recording_canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/shapes.hpp"
 
 namespace cardemo {
 namespace {
@@ -219,6 +221,137 @@ TEST(GoalOverlay, TimerDetailSaysTimeUp) {
   c.observe(world);
   runUntilOver(world, c);
   EXPECT_EQ(timerDetail(c), "time up");
+}
+
+// A level whose bay is `bay` (world metres), with a task.
+Scene taskScene(const Eigen::Vector2d& bay) {
+  Scene scene = bayScene(0.0);
+  scene.goal->bay.center = bay;
+  scene.level = LevelInfo{2, "Reverse bay", "Reverse into the bay between the cars, facing out"};
+  return scene;
+}
+
+// The panel behind the task's text, as (min, max) corners.
+std::pair<Eigen::Vector2f, Eigen::Vector2f> taskPanel(const RecordingCanvas& canvas) {
+  const RecordingCanvas::Text* task = canvas.lastText("facing out");
+  EXPECT_NE(task, nullptr);
+  if (task == nullptr) return {};
+  const RecordingCanvas::Fill* panel = backdropOf(canvas, *task);
+  EXPECT_NE(panel, nullptr);
+  return panel != nullptr ? bounds(*panel) : std::pair<Eigen::Vector2f, Eigen::Vector2f>{};
+}
+
+bool disjoint(const std::pair<Eigen::Vector2f, Eigen::Vector2f>& a,
+              const std::pair<Eigen::Vector2f, Eigen::Vector2f>& b) {
+  return a.first.x() >= b.second.x() || b.first.x() >= a.second.x() ||
+         a.first.y() >= b.second.y() || b.first.y() >= a.second.y();
+}
+
+// Screen rectangle of a world box under `camera`.
+std::pair<Eigen::Vector2f, Eigen::Vector2f> onScreen(const Camera& camera, const Obb2& box) {
+  Eigen::Vector2f lo{1e9f, 1e9f}, hi{-1e9f, -1e9f};
+  for (const Eigen::Vector2f& p : projectObb(camera, box)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return {lo, hi};
+}
+
+// The level's task is shown at the start of an attempt, on a backdrop that covers neither the
+// car, nor the bay, nor the timer: under the timer, or at the bottom when the bay is up there.
+TEST(GoalOverlay, TaskPanelAtTheStartIsClearOfTheCarTheBayAndTheTimer) {
+  for (const Eigen::Vector2d& bay : {Eigen::Vector2d(10.0, 0.0), Eigen::Vector2d(0.0, 22.0)}) {
+    const Scene scene = taskScene(bay);
+    const World world(scene);
+    ParkingChallenge c(*scene.goal, 120.0, 100);
+    c.observe(world);
+    const RecordingCanvas canvas = overlay(world, c);
+    ASSERT_TRUE(canvas.hasText("Level 2: Reverse bay"));
+    const auto panel = taskPanel(canvas);
+    const RecordingCanvas::Fill* timer = backdropOf(canvas, *canvas.lastText("0.0 s"));
+    ASSERT_NE(timer, nullptr);
+    EXPECT_TRUE(disjoint(panel, bounds(*timer))) << bay.transpose();
+    const Camera camera = followCamera(world.carBox(), 12.0, {1280, 720});
+    EXPECT_TRUE(disjoint(panel, onScreen(camera, world.carBox()))) << bay.transpose();
+    const Obb2 bay_box = Obb2::fromDegrees(bay, 0.0, scene.goal->bay.length, scene.goal->bay.width);
+    EXPECT_TRUE(disjoint(panel, onScreen(camera, bay_box))) << bay.transpose();
+    EXPECT_TRUE(panel.second.y() < 720.0f && panel.first.x() > 0.0f && panel.second.x() < 1280.0f);
+    // Readable: an almost opaque backdrop, the text opaque.
+    EXPECT_GE(backdropOf(canvas, *canvas.lastText("facing out"))->color.a, 200);
+    EXPECT_EQ(canvas.lastText("facing out")->color.a, 255);
+  }
+}
+
+// In the whole frame the task also stays clear of the HUD panel at the top left, however many
+// rows it has (a replay's playback adds two).
+TEST(GoalOverlay, TaskPanelIsClearOfTheHudPanel) {
+  Scene scene = taskScene({10.0, 0.0});
+  // Long enough to reach under the HUD panel if it were drawn right under the timer.
+  scene.level->task =
+      "Drive past, then reverse into the bay between the cars so that you end facing out";
+  const World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  GoalView view;
+  view.challenge = &c;
+  for (const double playback : {0.0, 2.0}) {
+    DrawOptions options;
+    options.goal = &view;
+    options.playback_speed = playback;
+    RecordingCanvas canvas;
+    drawFrame(canvas, world, followCamera(world.carBox(), 12.0, {1280, 720}), world.carBox(),
+              options);
+    // The HUD panel: the first panel-coloured fill, behind the speed.
+    const std::vector<RecordingCanvas::Fill> panels = canvas.fillsOf({12, 14, 18, 190});
+    ASSERT_FALSE(panels.empty());
+    const auto hud = bounds(panels.front());
+    const Eigen::Vector2f speed = canvas.lastText("Speed")->at;
+    ASSERT_TRUE(speed.x() > hud.first.x() && speed.y() > hud.first.y() &&
+                speed.x() < hud.second.x() && speed.y() < hud.second.y());
+    EXPECT_TRUE(disjoint(taskPanel(canvas), hud)) << playback;
+  }
+}
+
+TEST(GoalOverlay, TaskPanelFadesAfterFourSecondsOfPlayAndNeedsATask) {
+  const Scene scene = taskScene({10.0, 0.0});
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  const auto playTo = [&](std::int64_t frame) {
+    while (world.frame() < frame) {
+      world.step(InputFrame{});
+      c.observe(world);
+    }
+  };
+  playTo(450);
+  const RecordingCanvas fading = overlay(world, c);  // 3.75 s: half faded
+  ASSERT_TRUE(fading.hasText("facing out"));
+  EXPECT_LT(fading.lastText("facing out")->color.a, 200);
+  EXPECT_GT(fading.lastText("facing out")->color.a, 50);
+  playTo(480);
+  EXPECT_FALSE(overlay(world, c).hasText("facing out"));
+  EXPECT_FALSE(overlay(world, c).hasText("Reverse bay"));
+
+  Scene untitled = taskScene({10.0, 0.0});
+  untitled.level->task.clear();
+  const World start(untitled);
+  ParkingChallenge d(*untitled.goal, 120.0, 100);
+  d.observe(start);
+  EXPECT_FALSE(overlay(start, d).hasText("Reverse bay"));
+}
+
+// A task too long for a narrow window is drawn smaller, still on one line inside it.
+TEST(GoalOverlay, TaskPanelFitsANarrowWindow) {
+  Scene scene = taskScene({10.0, 0.0});
+  scene.level->task = std::string(100, 'w') + " facing out";
+  const World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  RecordingCanvas canvas({640, 480});
+  GoalView view;
+  view.challenge = &c;
+  drawGoalOverlay(canvas, world, followCamera(world.carBox(), 12.0, {640, 480}), world.carBox(),
+                  view);
+  const auto panel = taskPanel(canvas);
+  EXPECT_GE(panel.first.x(), 0.0f);
+  EXPECT_LE(panel.second.x(), 640.0f);
 }
 
 }  // namespace

@@ -13,9 +13,9 @@ namespace {
 
 TEST(ScenePickerView, ListsEveryRowAndHighlightsTheSelectedOne) {
   test::RecordingCanvas canvas;
-  const std::vector<PickerRow> rows{{"1   Straight in", "4.4 s"},
-                                    {"2   Reverse bay", "not parked yet"},
-                                    {"Free drive", "no goal"}};
+  const std::vector<PickerRow> rows{{"1   Straight in", "4.4 s", ""},
+                                    {"2   Reverse bay", "not parked yet", ""},
+                                    {"Free drive", "no goal", ""}};
   drawScenePicker(canvas, rows, 1);
   for (const char* text : {"choose a scene", "Straight in", "4.4 s", "Reverse bay",
                            "not parked yet", "Free drive", "Enter", "Esc"}) {
@@ -38,6 +38,33 @@ TEST(ScenePickerView, ListsEveryRowAndHighlightsTheSelectedOne) {
       EXPECT_LT(t.at.y(), top);
     }
   }
+}
+
+// The selected row's task is written under its title, inside its highlight; the others' are not.
+TEST(ScenePickerView, SelectedRowShowsItsTaskUnderItsTitle) {
+  const std::vector<PickerRow> rows{{"1   Straight in", "4.4 s", "Drive straight in"},
+                                    {"2   Reverse bay", "not parked yet", "Reverse in, facing out"},
+                                    {"Free drive", "no goal", "Drive anywhere"}};
+  test::RecordingCanvas canvas;
+  drawScenePicker(canvas, rows, 1);
+  EXPECT_FALSE(canvas.hasText("Drive straight in"));
+  EXPECT_FALSE(canvas.hasText("Drive anywhere"));
+  const test::RecordingCanvas::Text* task = canvas.lastText("Reverse in, facing out");
+  const test::RecordingCanvas::Text* title = canvas.lastText("2   Reverse bay");
+  const test::RecordingCanvas::Text* below = canvas.lastText("Free drive");
+  ASSERT_TRUE(task != nullptr && title != nullptr && below != nullptr);
+  EXPECT_GT(task->at.y(), title->at.y() + 20.0f);  // its own line, under the title
+  EXPECT_LT(task->at.y() + 1.2f * 15.0f, below->at.y());
+  EXPECT_EQ(task->at.x(), title->at.x());
+  const auto highlight = canvas.fillsOf({70, 110, 170, 255});
+  ASSERT_EQ(highlight.size(), 1u);
+  float bottom = -1e9f;
+  for (const Eigen::Vector2f& p : highlight[0].points) bottom = std::max(bottom, p.y());
+  EXPECT_LE(task->at.y() + 1.2f * 15.0f, bottom);
+  // The list's width does not change with the selection.
+  drawScenePicker(canvas, rows, 0);
+  ASSERT_TRUE(canvas.hasText("Drive straight in"));
+  EXPECT_FLOAT_EQ(canvas.fillsOf({70, 110, 170, 255})[0].width(), highlight[0].width());
 }
 
 }  // namespace
