@@ -102,8 +102,8 @@ void drawTaskPanel(Canvas& canvas, const World& world, const Camera& camera, con
   const Eigen::Vector2f size{std::max(hs.x(), ts.x()) + 2.0f * pad,
                              hs.y() + ts.y() + 0.4f * pad + 2.0f * pad};
   const float x = 0.5f * (static_cast<float>(vp.x()) - size.x());
-  // Above the status line at the bottom left (its height as drawHud sizes it).
-  const float status_top = static_cast<float>(vp.y()) - 12.0f * s - 1.3f * 14.0f * s - 10.0f * s;
+  // Above the status line at the bottom left.
+  const float status_top = statusLineTop(vp);
   const std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>> avoid{
       screenRect(camera, player_box), screenRect(camera, bayBox(goal))};
   // A wide panel reaches under the HUD panel at the top left: it goes below both.

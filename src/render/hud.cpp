@@ -113,6 +113,12 @@ HealthBarRect healthBarRect(const Eigen::Vector2i& viewport) {
   return {{12.0f * s + pad, 12.0f * s + pad}, {240.0f * s, 22.0f * s}};
 }
 
+float statusLineTop(const Eigen::Vector2i& viewport) {
+  const float s = hudScale(viewport);
+  return static_cast<float>(viewport.y()) - 12.0f * s - 1.3f * static_cast<float>(px(14, s)) -
+         10.0f * s;
+}
+
 Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& options) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
@@ -149,8 +155,7 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
 
   const int small = px(14, s);
   if (!options.status.empty()) {
-    textPanel(canvas, {12.0f * s, static_cast<float>(vp.y()) - 12.0f * s - 1.3f * small - pad},
-              {{options.status, kDim}}, small, pad * 0.6f);
+    textPanel(canvas, {12.0f * s, statusLineTop(vp)}, {{options.status, kDim}}, small, pad * 0.6f);
   }
   if (!options.help) {
     const std::string hint = "F1 help";
@@ -249,7 +254,7 @@ void drawHelp(Canvas& canvas, const std::string& note, const std::string& task) 
     y += task_h;
   }
   for (const auto& [k, d] : helpKeys()) {
-    canvas.text({tl.x() + pad, y}, k, h, {255, 220, 90, 255});
+    canvas.text({tl.x() + pad, y}, k, h, kBannerText);
     canvas.text({tl.x() + pad + key_w + gap, y}, d, h, kText);
     y += row;
   }

@@ -26,6 +26,9 @@ struct HealthBarRect {
 /// The health bar's place in the HUD panel at the top left (drawHud draws it there).
 [[nodiscard]] HealthBarRect healthBarRect(const Eigen::Vector2i& viewport);
 
+/// The top of the status line's panel at the bottom left (drawHud draws it there), pixels.
+[[nodiscard]] float statusLineTop(const Eigen::Vector2i& viewport);
+
 /// The health bar: a dark trough of `size`, filled from the left in proportion to health, with
 /// the number written on it.
 void drawHealthBar(Canvas& canvas, const Eigen::Vector2f& top_left, const Eigen::Vector2f& size,
