@@ -88,6 +88,30 @@ double gapBefore(std::uint32_t id, std::span<const std::uint32_t> ids, const dou
   return -std::numeric_limits<double>::infinity();
 }
 
+// Calls `f` with every face normal of the pair (the SAT axes), each as the unit axis from the car
+// towards the collider: both ways along each box axis, and the inward normal of each polygon edge.
+template <class F>
+void forEachFaceAxis(const Obb2& car, const Obb2& box, F&& f) {
+  for (const Eigen::Vector2d& a : {car.axis, car.perp(), box.axis, box.perp()}) {
+    f(a);
+    f(Eigen::Vector2d(-a));
+  }
+}
+
+template <class F>
+void forEachFaceAxis(const Obb2& car, const ConvexPolygon& polygon, F&& f) {
+  for (const Eigen::Vector2d& a : {car.axis, car.perp()}) {
+    f(a);
+    f(Eigen::Vector2d(-a));
+  }
+  for (int i = 0; i < polygon.count; ++i) {
+    const Eigen::Vector2d edge = polygon.vertex((i + 1) % polygon.count) - polygon.vertex(i);
+    // Counter-clockwise, so the outward normal is the edge turned clockwise; the car meets the
+    // edge from outside, so the axis towards the polygon is the inward one.
+    f(Eigen::Vector2d(-edge.y(), edge.x()) / std::sqrt(edge.squaredNorm()));
+  }
+}
+
 }  // namespace
 
 World::World(Scene scene, const WorldSettings& settings)
@@ -207,8 +231,9 @@ inline double* World::beginNarrowPhase(const Aabb2& bounds) {
   SatResult2 r = colliders_.visit(id, [&box](const auto& s) { return collidePlayer(box, s); });
   gap = r.separation;
   if (r.separation <= 0.0) {
-    if (touching_[id] == 0 && !previous_contacts_.empty()) smoothSeam(box, id, r);
-    detected_.push_back({id, r.normal, r.separation});
+    const bool seam = touching_[id] == 0 && !previous_contacts_.empty() && smoothSeam(box, id, r);
+    const bool slipped = !seam && slipPastCorner(box, id, r);
+    detected_.push_back({id, r.normal, r.separation, slipped});
   }
 }
 
@@ -238,7 +263,7 @@ void World::narrowPhaseAfterPush(const Obb2& box, const Aabb2& bounds, double mo
   have_detected_ = true;
 }
 
-void World::smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const {
+bool World::smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const {
   // Sliding along a row of touching or close colliders, the car's leading corner meets the next
   // one's corner; SAT then picks the tiny overlap along the row as the normal and the car stops
   // dead on the seam. When the new collider overlaps only a little along the normal of a collider
@@ -252,9 +277,69 @@ void World::smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const {
     if (-along <= settings_.seam_depth) {
       r.normal = support.normal;
       r.separation = along;
-      return;
+      return true;
     }
   }
+  return false;
+}
+
+bool World::slipPastCorner(const Obb2& box, std::uint32_t id, SatResult2& r) const {
+  // A car whose nose clips a parked car's corner overlaps it less along the travel than across it
+  // (it moved only one step into it), so SAT takes the travel axis as the normal and the response
+  // stops the car dead, however little of the corner it caught; with the throttle held it stays
+  // stuck there, each step's push-out undoing the step. When a face axis of the pair at least 45
+  // degrees off the car's travel overlaps by at most `corner_slip_depth`, about the rounding of a
+  // real bumper's corner, the car is pushed along that one instead: the "corner correction" of
+  // platform games such as Celeste, which nudge a jump that clips a ledge by a few pixels past it.
+  // A push along a face axis by its overlap (less the resting penetration) ends the overlap there,
+  // with a well-conditioned length: the gap itself, not a gap divided by a cosine.
+  const Eigen::Vector2d v = car_.velocity();
+  const double speed2 = v.x() * v.x() + v.y() * v.y();
+  const double closing = v.x() * r.normal.x() + v.y() * r.normal.y();
+  // Only a contact within 45 degrees of head-on stops the car; a shallower one already slides.
+  if (!(closing > 0.0) || !(2.0 * closing * closing >= speed2)) return false;
+  bool found = false;
+  double best_gap = 0.0;
+  double best_along = 0.0;
+  Eigen::Vector2d best_axis = r.normal;
+  colliders_.visit(id, [&](const auto& shape) {
+    forEachFaceAxis(box, shape, [&](const Eigen::Vector2d& axis) {
+      const double along = v.x() * axis.x() + v.y() * axis.y();
+      if (!(along <= 0.0 || 2.0 * along * along < speed2)) return;
+      const double gap = separationAlong(box, shape, axis);
+      if (!(-gap <= settings_.corner_slip_depth)) return;
+      // The shallowest push wins, then the gentler one; an exact tie of both keeps the first.
+      if (found && !(gap > best_gap || (gap == best_gap && along < best_along))) return;
+      found = true;
+      best_gap = gap;
+      best_along = along;
+      best_axis = axis;
+    });
+  });
+  if (!found) return false;
+  r.normal = best_axis;
+  r.separation = best_gap;
+  return true;
+}
+
+void World::dropClearedSlips() {
+  // A corner the sideways push cleared altogether was never touched at the end of the step, where
+  // hits are judged (and where the oracle and Box2D judge them in `compare`): as in the platform
+  // games' correction, the car was moved past it before it could collide. The last detect ran at
+  // the final pose, so a collider missing from it is apart there.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const std::uint32_t id = contacts_[k].collider;
+    const bool cleared = contacts_[k].slipped &&
+                         std::none_of(detected_.begin(), detected_.end(),
+                                      [id](const ActiveContact& c) { return c.collider == id; });
+    if (cleared) continue;
+    contacts_[kept] = contacts_[k];
+    contact_speed_[kept] = contact_speed_[k];
+    ++kept;
+  }
+  contacts_.resize(kept);
+  contact_speed_.resize(kept);
 }
 
 void World::mergeDetected() {
@@ -439,6 +524,7 @@ void World::resolveContacts() {
     detect();
     mergeDetected();
   }
+  dropClearedSlips();
 }
 
 int World::impactDamage(double speed) const {

@@ -29,10 +29,12 @@ struct WorldSettings {
   double scrape_threshold = 1.0;  ///< Sliding along a collider faster than this (m/s) scrapes.
   double scrape_damage_per_s = 4.0;  ///< Damage per second of scraping (whole points, exact).
   int max_push_iterations = 4;       ///< Contact resolution passes per step.
-  double seam_depth = 0.05;   ///< A new contact that overlaps by at most this much (m) along the
-                              ///< normal of a collider touched at the last frame takes that normal:
-                              ///< the seam between two neighbours is not a wall.
-  SimulationSchemes schemes;  ///< Alternatives for studies; the defaults are the game's.
+  double seam_depth = 0.05;  ///< A new contact that overlaps by at most this much (m) along the
+                             ///< normal of a collider touched at the last frame takes that normal:
+                             ///< the seam between two neighbours is not a wall.
+  double corner_slip_depth = 0.2;  ///< A head-on contact that a sideways push of at most this
+                                   ///< much (m) clears is a clipped corner: the car slides past.
+  SimulationSchemes schemes;       ///< Alternatives for studies; the defaults are the game's.
 };
 
 /// A hit: the first frame of contact with one static collider.
@@ -74,6 +76,7 @@ struct ActiveContact {
   std::uint32_t collider = 0;                         ///< Collider index.
   Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  ///< From the player to the collider.
   double separation = 0.0;                            ///< Before push-out, metres (<= 0).
+  bool slipped = false;  ///< A clipped corner the car was pushed sideways past (slipPastCorner).
 };
 
 /// The world: owns the scene, the broad phase (built once) and the player's car.
@@ -201,7 +204,9 @@ class World {
   double* beginNarrowPhase(const Aabb2& bounds);
   // Tests one candidate at `box`: stores its gap and, when it touches, adds the contact.
   void testCandidate(const Obb2& box, std::uint32_t id, double& gap);
-  void smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const;
+  bool smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const;
+  bool slipPastCorner(const Obb2& box, std::uint32_t id, SatResult2& r) const;
+  void dropClearedSlips();
   void gatherCandidates(const Aabb2& query);
   void mergeDetected();
   void moveWithSubsteps(const CarState& start, const CarState& next);

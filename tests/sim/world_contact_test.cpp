@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
+#include "collision/narrow_phase.hpp"
 #include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
@@ -102,6 +104,95 @@ TEST(WorldContact, GrazingARowOfParkedCarsDoesNotSnagOnTheSeams) {
     // One first contact per car at most, each a gentle one.
     EXPECT_LE(world.hits().size(), 6u) << "gap " << gap;
     for (const HitEvent& h : world.hits()) EXPECT_LT(h.speed, 1.0) << h.id << " gap " << gap;
+  }
+}
+
+// A parked car turned by `turn_deg` ahead of the player (at the origin, facing +x at `speed`),
+// placed so that its lowest point is `clip` metres inside the player's left side (y = 0.9): driving
+// on, the player's nose catches only that much of its corner.
+Scene cornerAhead(double turn_deg, double clip, double speed = 10.0) {
+  ParkedCar p = parkedCar("corner", 8.0, 0.0, turn_deg);
+  double lowest = 1e9;
+  for (const Eigen::Vector2d& c : p.box.corners()) lowest = std::min(lowest, c.y());
+  p.box.center.y() += 0.9 - clip - lowest;
+  Scene scene = sceneWith({p});
+  scene.player.speed = speed;
+  return scene;
+}
+
+TEST(WorldContact, ClippingACornerSlidesPastIt) {
+  // The play-test's stuck car: the nose met a parked car's corner, the response took the travel
+  // axis as the normal, and the car stayed at 0 km/h with the throttle held. A corner caught by
+  // less than corner_slip_depth now pushes the car sideways, and it drives on past.
+  // At these turns the parked car's corner is the first point the nose meets (at -10 or 80 degrees
+  // the player's corner meets a side sloping away first: a glance that ShallowGlance covers).
+  for (const double speed : {1.0, 10.0}) {
+    for (const double turn : {-80.0, 0.0, 10.0, 30.0}) {
+      for (const double clip : {0.02, 0.1, 0.19}) {
+        const Scene scene = cornerAhead(turn, clip, speed);
+        World world(scene);
+        const std::string where = "speed " + std::to_string(speed) + " turn " +
+                                  std::to_string(turn) + " clip " + std::to_string(clip);
+        double slowest = 1e9;
+        for (int f = 0; f < 120 * 8 && world.car().position.x() < 16.0; ++f) {
+          world.step(kUp);
+          slowest = std::min(slowest, world.car().speed);
+          // In contact exactly when the pose after the step overlaps, where the oracle judges
+          // hits: a push that cleared the corner altogether is no contact (dropClearedSlips).
+          const double sep = collidePlayer(world.carBox(), scene.parked.front().box).separation;
+          ASSERT_EQ(!world.contacts().empty(), sep <= 0.0) << where << " frame " << world.frame();
+        }
+        ASSERT_FALSE(world.hits().empty()) << where;
+        EXPECT_GT(world.car().position.x(), 16.0) << where;
+        EXPECT_GT(slowest, 0.9 * speed) << where;
+        // Pushed to the right of the corner, by about the clip.
+        EXPECT_LT(world.car().position.y(), -0.5 * clip) << where;
+        EXPECT_GT(world.car().position.y(), -1.0) << where;
+        // A sideways push closes at 0 m/s: the clip does no impact damage.
+        for (const HitEvent& h : world.hits()) EXPECT_EQ(h.damage, 0) << where;
+      }
+    }
+  }
+}
+
+TEST(WorldContact, CatchingMoreThanACornerIsStillACrash) {
+  // Past corner_slip_depth the nose hits the car: the response stops the forward motion.
+  for (const double turn : {-80.0, 0.0, 10.0}) {
+    World world(cornerAhead(turn, 0.3));
+    while (world.hits().empty() && world.frame() < 240) world.step(kUp);
+    const std::string where = "turn " + std::to_string(turn);
+    ASSERT_EQ(world.hits().size(), 1u) << where;
+    EXPECT_GT(world.hits().front().damage, 0) << where;
+    EXPECT_LT(world.car().velocity().x(), 3.0) << where;
+  }
+}
+
+TEST(WorldContact, CornerSlipDepthZeroKeepsTheHeadOnResponse) {
+  // The setting is the only switch: at 0 the clipped corner stops the car as it used to.
+  WorldSettings settings;
+  settings.corner_slip_depth = 0.0;
+  World world(cornerAhead(0.0, 0.1), settings);
+  for (int f = 0; f < 120 * 2; ++f) world.step(kUp);
+  EXPECT_LT(world.car().position.x(), 8.0);
+}
+
+TEST(WorldContact, CornerSlipIsMirrorSymmetric) {
+  // The same clip on the right side slides the car to the left, to the last bit.
+  for (const double turn : {-80.0, 10.0}) {
+    Scene left = cornerAhead(turn, 0.1);
+    Scene right = left;
+    for (ParkedCar& p : right.parked) {
+      p.box.center.y() = -p.box.center.y();
+      p.box.axis.y() = -p.box.axis.y();
+    }
+    World a(left), b(right);
+    for (int f = 0; f < 120; ++f) {
+      a.step(kUp);
+      b.step(kUp);
+      ASSERT_EQ(a.car().position.x(), b.car().position.x()) << "turn " << turn << " frame " << f;
+      ASSERT_EQ(a.car().position.y(), -b.car().position.y()) << "turn " << turn << " frame " << f;
+    }
+    EXPECT_EQ(a.hits().size(), b.hits().size());
   }
 }
 

@@ -184,7 +184,10 @@ TEST(WorldWork, GrownQueryBoxGivesTheCandidatesOfAFreshQuery) {
   // query).
   for (const double offset : {0.0, 1e7}) {
     for (const double speed : {0.0, 400.0}) {
-      Scene scene = test::translated(test::parkingLot(19), {offset, -offset});
+      // Lot and drive 20: lot 19's drive used to stay caught on a parked car's corner for 4,000
+      // frames; since a clipped corner slides (corner_slip_depth) it drives away from the cars and
+      // would compare few candidates. This drive stays among them.
+      Scene scene = test::translated(test::parkingLot(20), {offset, -offset});
       // Fast: straight into a row at a speed no step can cover without a sweep.
       scene.player.speed = speed;
       if (speed > 0.0) {
@@ -201,7 +204,7 @@ TEST(WorldWork, GrownQueryBoxGivesTheCandidatesOfAFreshQuery) {
       settings.car.max_speed = std::max(settings.car.max_speed, speed);
       World world(scene, settings);
       std::int64_t compared = 0;
-      for (const InputFrame& in : test::scriptedDrive(19, 5000)) {
+      for (const InputFrame& in : test::scriptedDrive(20, 5000)) {
         world.step(in);
         const Obb2 box = world.carBox();
         ASSERT_EQ(world.candidates(), touching(scene, box.aabb()))
