@@ -5,6 +5,12 @@
 
 namespace cardemo {
 
+/// Pixels across the top and the bottom of a viewport that overlays cover (the HUD's strips).
+struct ViewInsets {
+  float top = 0.0f;     ///< Height of the strip at the top, pixels.
+  float bottom = 0.0f;  ///< Height of the strip at the bottom, pixels.
+};
+
 /// A view of the world. Positions are subtracted in double before converting to float, so the
 /// picture is as sharp at 1e7 m from the origin as at the origin.
 struct Camera {

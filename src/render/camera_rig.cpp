@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/hud.hpp"
 #include "render/world_layer.hpp"
 
 namespace cardemo {
@@ -15,10 +16,13 @@ double follow(double dt, double tau) {
 
 }  // namespace
 
-double fittedZoom(const Aabb2& area, const Eigen::Vector2i& viewport, double margin) {
+double fittedZoom(const Aabb2& area, const Eigen::Vector2i& viewport, double margin,
+                  const ViewInsets& insets) {
   const Eigen::Vector2d size = (area.max - area.min) * std::max(margin, 1.0);
+  const double height =
+      std::max(1.0, static_cast<double>(viewport.y()) - insets.top - insets.bottom);
   const double zx = size.x() > 0.0 ? viewport.x() / size.x() : 1e9;
-  const double zy = size.y() > 0.0 ? viewport.y() / size.y() : 1e9;
+  const double zy = size.y() > 0.0 ? height / size.y() : 1e9;
   return std::min(zx, zy);
 }
 
@@ -39,13 +43,19 @@ Aabb2 sceneExtent(const Scene& scene) {
   return all;
 }
 
-Camera clampToBounds(Camera camera, const Aabb2& bounds) {
+Camera clampToBounds(Camera camera, const Aabb2& bounds, const ViewInsets& insets) {
+  // The view may reach past the walls by the strips the HUD covers (screen top is world +y), so
+  // that what is under them can be brought out; then the view is held inside the grown bounds.
+  const double ppm = camera.pixels_per_metre;
+  Aabb2 held = bounds;
+  held.max.y() += insets.top / ppm;
+  held.min.y() -= insets.bottom / ppm;
   for (int axis = 0; axis < 2; ++axis) {
-    const double half = 0.5 * camera.viewport[axis] / camera.pixels_per_metre;
-    const double lo = bounds.min[axis] + half;
-    const double hi = bounds.max[axis] - half;
+    const double half = 0.5 * camera.viewport[axis] / ppm;
+    const double lo = held.min[axis] + half;
+    const double hi = held.max[axis] - half;
     camera.center[axis] = lo <= hi ? std::clamp(camera.center[axis], lo, hi)
-                                   : 0.5 * (bounds.min[axis] + bounds.max[axis]);
+                                   : 0.5 * (held.min[axis] + held.max[axis]);
   }
   return camera;
 }
@@ -53,8 +63,9 @@ Camera clampToBounds(Camera camera, const Aabb2& bounds) {
 CameraRig::CameraRig(const World& world, const Eigen::Vector2i& viewport,
                      const CameraRigSettings& settings)
     : settings_(settings), bounds_(cameraBounds(world.scene())) {
-  base_ppm_ = std::clamp(fittedZoom(sceneExtent(world.scene()), viewport, settings_.fit_margin),
-                         settings_.min_fit_ppm, settings_.max_fit_ppm);
+  base_ppm_ = std::clamp(
+      fittedZoom(sceneExtent(world.scene()), viewport, settings_.fit_margin, insets(viewport)),
+      settings_.min_fit_ppm, settings_.max_fit_ppm);
   reset(world);
 }
 
@@ -63,6 +74,10 @@ Eigen::Vector2d CameraRig::aim(const World& world) const {
   const double len = lead.norm();
   if (len > settings_.max_look_ahead_m) lead *= settings_.max_look_ahead_m / len;
   return world.car().position + lead;
+}
+
+ViewInsets CameraRig::insets(const Eigen::Vector2i& viewport) const {
+  return settings_.clear_hud ? hudInsets(viewport) : ViewInsets{};
 }
 
 void CameraRig::reset(const World& world) {
@@ -93,9 +108,12 @@ Camera CameraRig::camera(const Eigen::Vector2i& viewport, double alpha, double u
   const double zoom = previous_speed_zoom_ + (speed_zoom_ - previous_speed_zoom_) * a;
   c.pixels_per_metre = base_ppm_ * zoom * user_zoom;
   c.center = previous_center_ + (center_ - previous_center_) * a;
-  // Screen x right is world +x; screen y down is world -y.
-  c.center += Eigen::Vector2d{shake_px.x(), -shake_px.y()} / c.pixels_per_metre;
-  return bounds_ ? clampToBounds(c, *bounds_) : c;
+  // The aim sits in the middle of the view between the HUD's strips: half their difference lower
+  // on screen. Screen x right is world +x; screen y down is world -y.
+  const ViewInsets hud = insets(viewport);
+  const Eigen::Vector2f offset_px = shake_px - Eigen::Vector2f{0.0f, 0.5f * (hud.top - hud.bottom)};
+  c.center += Eigen::Vector2d{offset_px.x(), -offset_px.y()} / c.pixels_per_metre;
+  return bounds_ ? clampToBounds(c, *bounds_, hud) : c;
 }
 
 }  // namespace cardemo

@@ -24,11 +24,16 @@ struct CameraRigSettings {
                                     ///< a 4.5 m car stays 108 px long), pixels per metre.
   double max_fit_ppm = 40.0;        ///< and lowered to at most this, pixels per metre.
   double fit_margin = 1.04;         ///< The fitted view is this much larger than the scene.
+  /// Frame the scene in the viewport minus the HUD's strips (hudInsets): the fit, the car's place
+  /// (the middle of what is left) and the clamp, which then lets the walls' outside show only
+  /// under those strips. Off: the whole viewport.
+  bool clear_hud = true;
 };
 
-/// Pixels per metre at which `area` (world metres) fits inside `viewport` with `margin` to spare.
+/// Pixels per metre at which `area` (world metres) fits inside `viewport`, less the strips
+/// `insets` at its top and bottom, with `margin` to spare.
 [[nodiscard]] double fittedZoom(const Aabb2& area, const Eigen::Vector2i& viewport,
-                                double margin = 1.0);
+                                double margin = 1.0, const ViewInsets& insets = {});
 
 /// What the camera may show of a scene: the walls' outer edges, or, without walls, nothing (no
 /// clamp).
@@ -37,9 +42,10 @@ struct CameraRigSettings {
 /// Everything of the scene: walls, the player's start, parked cars and obstacles.
 [[nodiscard]] Aabb2 sceneExtent(const Scene& scene);
 
-/// Moves `camera.center` so the view stays inside `bounds`; along an axis where the bounds are
-/// smaller than the view, centres them instead.
-[[nodiscard]] Camera clampToBounds(Camera camera, const Aabb2& bounds);
+/// Moves `camera.center` so the view, less the strips `insets`, stays inside `bounds`; along an
+/// axis where the bounds are smaller than that, centres them in it instead.
+[[nodiscard]] Camera clampToBounds(Camera camera, const Aabb2& bounds,
+                                   const ViewInsets& insets = {});
 
 /// The rig. reset() snaps it to the world; step() after each World::step moves it smoothly.
 class CameraRig {
@@ -54,7 +60,8 @@ class CameraRig {
   void step(const World& world);
 
   /// The camera to draw with: the state between the last two steps at `alpha` (0..1), zoom times
-  /// `user_zoom` (the + and - keys), the screen offset `shake_px` added, then clamped to the walls.
+  /// `user_zoom` (the + and - keys), the aim in the middle of the view clear of the HUD, the
+  /// screen offset `shake_px` added, then clamped to the walls.
   [[nodiscard]] Camera camera(const Eigen::Vector2i& viewport, double alpha = 1.0,
                               double user_zoom = 1.0,
                               const Eigen::Vector2f& shake_px = Eigen::Vector2f::Zero()) const;
@@ -72,6 +79,7 @@ class CameraRig {
 
  private:
   [[nodiscard]] Eigen::Vector2d aim(const World& world) const;
+  [[nodiscard]] ViewInsets insets(const Eigen::Vector2i& viewport) const;
 
   CameraRigSettings settings_;
   std::optional<Aabb2> bounds_;

@@ -76,18 +76,6 @@ void drawLamps(Canvas& canvas, const Local& l, const CarLook& look, const Palett
     glow.a = 70;
     canvas.fillConvex(l.quad(-1.22, -0.99, -1.0, 1.0), glow);
   }
-  if (look.lit) {
-    Rgba beam = palette.headlight;
-    beam.a = 20;
-    for (const double side : {1.0, -1.0}) {
-      const double hx = l.box.half.x();
-      const double hy = l.box.half.y();
-      const std::array<Eigen::Vector2f, 4> cone{
-          l.at(hx, side * 0.55 * hy), l.at(hx, side * 0.85 * hy),
-          l.at(hx + 3.2, side * (0.85 * hy + 0.8)), l.at(hx + 3.2, side * (0.55 * hy - 0.6))};
-      canvas.fillConvex(cone, beam);
-    }
-  }
 }
 
 void drawDent(Canvas& canvas, const Local& l, const Dent& dent, const Rgba& body) {

@@ -17,7 +17,7 @@ struct CarLook {
   Rgba body;                          ///< Paint.
   double steer = 0.0;                 ///< Front-wheel angle, radians, positive to the left.
   double wheelbase = 2.7;             ///< Axle distance, metres.
-  bool lit = false;                   ///< Headlamps on (the player's car).
+  bool lit = false;                   ///< Headlamps on (the player's car; beams: headlights.hpp).
   bool braking = false;               ///< Brake lamps lit.
   bool reversing = false;             ///< Reversing lamps lit.
   float flash = 0.0f;                 ///< Hit flash, 0..1.

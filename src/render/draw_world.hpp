@@ -30,7 +30,7 @@ struct DrawOptions {
   /// Frames per second, shown in the HUD with the debug overlay (0 hides it).
   double fps = 0.0;
   /// Shows the frame number in the HUD (as the debug overlay and a replay's playback do): a
-  /// driving player sees speed and hits only.
+  /// driving player sees speed and crashes only.
   bool frame_counter = false;
   /// Replay speed shown in the HUD while playing a replay (0 hides it).
   double playback_speed = 0.0;
@@ -47,8 +47,9 @@ struct DrawOptions {
   std::vector<std::pair<std::string, std::string>> game_over_rows;
   /// Keys line of the GAME OVER panel (the keys that work now); empty: "Enter restart    Esc quit".
   std::string game_over_keys;
-  /// A level's bay, timer and PARKED / TIME UP panel (drawGoalOverlay), drawn over the HUD and
-  /// under the help and the banner; null: no goal.
+  /// A level's goal: its bay outlined on the ground under the cars (drawGoalBay), and the arrow,
+  /// timer and PARKED / TIME UP panel (drawGoalOverlay) over the HUD and under the help and the
+  /// banner; null: no goal.
   const GoalView* goal = nullptr;
 };
 

@@ -191,16 +191,19 @@ std::optional<Eigen::Vector2f> edgeAnchor(const Eigen::Vector2i& viewport,
   return half + d / t;
 }
 
+void drawGoalBay(Canvas& canvas, const Camera& camera, const GoalView& view) {
+  const ParkingChallenge& c = *view.challenge;
+  const Rgba color = c.lastCheck().position_ok && c.lastCheck().heading_ok ? kTargetReady : kTarget;
+  const std::array<Eigen::Vector2f, 4> bay = projectObb(camera, bayBox(c.goal()));
+  outline(canvas, bay, std::max(2.0f, 2.5f * hudScale(canvas.size())), color);
+}
+
 void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
                      const Obb2& player_box, const GoalView& view,
                      const Eigen::Vector2f& hud_corner) {
   const ParkingChallenge& c = *view.challenge;
   const Goal& goal = c.goal();
   const float s = hudScale(canvas.size());
-  const Rgba color = c.lastCheck().position_ok && c.lastCheck().heading_ok ? kTargetReady : kTarget;
-  const std::array<Eigen::Vector2f, 4> bay = projectObb(camera, bayBox(goal));
-  outline(canvas, bay, std::max(2.0f, 2.5f * s), color);
-
   const Eigen::Vector2f target = camera.toScreen(goal.bay.center);
   const float margin = 48.0f * s;
   if (const std::optional<Eigen::Vector2f> at = edgeAnchor(canvas.size(), target, margin)) {

@@ -1,6 +1,6 @@
 #pragma once
-/// The parking challenge on screen: the target bay, an arrow to it when it is off screen, the
-/// timer, and the PARKED / TIME UP panel beside the car.
+/// The parking challenge on screen: the target bay (on the ground), an arrow to it when it is off
+/// screen, the timer, and the PARKED / TIME UP panel beside the car.
 
 #include <optional>
 #include <string>
@@ -48,7 +48,11 @@ struct GoalView {
 /// while the car is in the bay; then what ended the run.
 [[nodiscard]] std::string timerDetail(const ParkingChallenge& challenge);
 
-/// Draws the bay outline, the off-screen arrow with the distance, the timer, the level's task
+/// The target bay's outline, yellow, green once the car's position and heading are within the
+/// tolerances: paint on the ground, which drawWorldLayer draws under the cars.
+void drawGoalBay(Canvas& canvas, const Camera& camera, const GoalView& view);
+
+/// Draws the off-screen arrow with the distance to the bay, the timer, the level's task
 /// (`level.task`, for the first kTaskSeconds of play, clear of the car, the bay and the HUD panel
 /// whose bottom-right corner is `hud_corner` when it can be), and the end panel when the car has
 /// parked or the time is up.

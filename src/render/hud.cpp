@@ -107,10 +107,40 @@ void drawHealthLabel(Canvas& canvas, const Eigen::Vector2f& top_left, const Eige
   canvas.text(at, label, h, kText);
 }
 
+std::int64_t damagingCrashes(const std::vector<HitEvent>& hits) {
+  std::vector<std::int64_t> crashes;
+  for (const HitEvent& h : hits) {
+    if (h.damage > 0) crashes.push_back(h.crash);
+  }
+  std::sort(crashes.begin(), crashes.end());
+  return std::unique(crashes.begin(), crashes.end()) - crashes.begin();
+}
+
 HealthBarRect healthBarRect(const Eigen::Vector2i& viewport) {
   const float s = hudScale(viewport);
   const float pad = 10.0f * s;
   return {{12.0f * s + pad, 12.0f * s + pad}, {240.0f * s, 22.0f * s}};
+}
+
+namespace {
+
+// Rows of the player's HUD table: speed and crashes (the developer rows come below them).
+constexpr int kPlayerRows = 2;
+
+// Height of the HUD panel holding the health bar and `rows` table rows, pixels.
+float hudPanelHeight(const Eigen::Vector2i& viewport, std::size_t rows) {
+  const float s = hudScale(viewport);
+  const float row = static_cast<float>(px(16, s)) * 1.3f;
+  return healthBarRect(viewport).size.y() + 10.0f * s * 2.5f + row * static_cast<float>(rows);
+}
+
+}  // namespace
+
+ViewInsets hudInsets(const Eigen::Vector2i& viewport) {
+  const float s = hudScale(viewport);
+  const float panel_top = healthBarRect(viewport).top_left.y() - 10.0f * s;
+  return {panel_top + hudPanelHeight(viewport, kPlayerRows) + 8.0f * s,
+          static_cast<float>(viewport.y()) - statusLineTop(viewport)};
 }
 
 float statusLineTop(const Eigen::Vector2i& viewport) {
@@ -129,12 +159,14 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
                   options.run_over ? std::string("stopped")
                                    : format("%.0f km/h", std::abs(world.car().speed) * 3.6),
                   kText});
-  rows.push_back({"Hits", std::to_string(world.hits().size()), kText});
-  // Developer rows: a player driving sees speed and hits; the debug overlay (B), a replay's
-  // playback and `cardemo render` add the frame, the overlay the frame rate.
+  rows.push_back({"Crashes", std::to_string(damagingCrashes(world.hits())), kText});
+  // Developer rows: a player driving sees speed and crashes; the debug overlay (B), a replay's
+  // playback and `cardemo render` add the frame, the overlay the raw hits (every first touch, as
+  // the summary JSON counts them) and the frame rate.
   if (options.frame_counter || options.debug_overlay || options.playback_speed > 0.0) {
     rows.push_back({"Frame", std::to_string(world.frame()), kDim});
   }
+  if (options.debug_overlay) rows.push_back({"Hits", std::to_string(world.hits().size()), kDim});
   if (options.debug_overlay && options.fps > 0.0) {
     rows.push_back({"FPS", format("%.0f", options.fps), kDim});
   }
@@ -145,9 +177,7 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
   const Eigen::Vector2f bar_size = bar.size;
   const Eigen::Vector2f origin = bar.top_left - Eigen::Vector2f{pad, pad};
   // One panel behind both the bar and the table.
-  const float row = static_cast<float>(h) * 1.3f;
-  const Eigen::Vector2f panel{bar_size.x() + 2.0f * pad,
-                              bar_size.y() + pad * 2.5f + row * static_cast<float>(rows.size())};
+  const Eigen::Vector2f panel{bar_size.x() + 2.0f * pad, hudPanelHeight(vp, rows.size())};
   fillRect(canvas, origin, panel, kPanel);
   drawHealthBar(canvas, bar.top_left, bar_size, world.health(), world.scene().player.health);
   drawTable(canvas, origin + Eigen::Vector2f{pad, pad * 1.8f + bar_size.y()}, bar_size.x(), rows,
@@ -194,7 +224,7 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
   if (panel.rows.empty()) {
     panel.rows = {
         {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
-        {"Hits", std::to_string(world.hits().size())},
+        {"Crashes", std::to_string(damagingCrashes(world.hits()))},
         {"Damage", std::to_string(world.scene().player.health - world.health())}};
   }
   drawEndPanel(canvas, camera, player_box, panel);

@@ -1,10 +1,12 @@
 #pragma once
-/// Screen-space overlays: the HUD (health bar, speed, hits, frame, FPS), the PAUSED banner, the
-/// game-over panel and the F1 help panel.
+/// Screen-space overlays: the HUD (health bar, speed, crashes; hits, frame, FPS for developers),
+/// the PAUSED banner, the game-over panel and the F1 help panel.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "render/camera.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
 #include "sim/world.hpp"
@@ -17,6 +19,10 @@ namespace cardemo {
 /// Size factor for HUD text and panels at a viewport height (1 at 720 px).
 [[nodiscard]] float hudScale(const Eigen::Vector2i& viewport);
 
+/// Crashes that cost health: distinct HitEvent::crash numbers among the hits with damage. A bounce
+/// inside a crash already charged, or a touch under the damage threshold, adds none.
+[[nodiscard]] std::int64_t damagingCrashes(const std::vector<HitEvent>& hits);
+
 /// Where the HUD draws the health bar in a viewport, pixels.
 struct HealthBarRect {
   Eigen::Vector2f top_left;  ///< Top-left corner.
@@ -28,6 +34,11 @@ struct HealthBarRect {
 
 /// The top of the status line's panel at the bottom left (drawHud draws it there), pixels.
 [[nodiscard]] float statusLineTop(const Eigen::Vector2i& viewport);
+
+/// The strips the HUD covers across a viewport, which the camera keeps the scene out of: at the
+/// top, down to a little below the player's HUD panel (lower than the level's timer beside it);
+/// at the bottom, from the status line's top.
+[[nodiscard]] ViewInsets hudInsets(const Eigen::Vector2i& viewport);
 
 /// The health bar: a dark trough of `size`, filled from the left in proportion to health, with
 /// the number written on it.
@@ -60,7 +71,7 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
 /// on an opaque backdrop; drawn last, over the HUD and the level's timer. Empty text: nothing.
 void drawBanner(Canvas& canvas, const std::string& text);
 
-/// The game-over panel beside the car (never over it): time, hits and damage, or `summary_rows`
+/// The game-over panel beside the car (never over it): time, crashes and damage, or `summary_rows`
 /// when given (a level's run summary), and the keys line `keys` (default "Enter restart    Esc
 /// quit").
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,

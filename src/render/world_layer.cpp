@@ -8,7 +8,9 @@
 
 #include "render/car_art.hpp"
 #include "render/effects_layer.hpp"
+#include "render/goal_overlay.hpp"
 #include "render/ground_layer.hpp"
+#include "render/headlights.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
@@ -91,8 +93,12 @@ void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
   // A scene that paints its own lines gets no automatic bays.
   if (scene.markings.empty()) drawBayLines(canvas, camera, scene, palette);
   drawMarkings(canvas, camera, scene, palette);
-  if (scene.bounds) drawWalls(canvas, camera, *scene.bounds, palette);
+  // Paint on the ground, so the cars drive over it.
+  if (options.goal != nullptr) drawGoalBay(canvas, camera, *options.goal);
   if (fx != nullptr) drawSkidMarks(canvas, camera, *fx, palette);
+  // Light on the ground: under the walls and the cars, which would otherwise be painted over.
+  drawHeadlightBeams(canvas, camera, scene, player_box, palette);
+  if (scene.bounds) drawWalls(canvas, camera, *scene.bounds, palette);
   for (const Obstacle& o : scene.obstacles) {
     if (o.polygon.aabb().overlaps(view)) drawObstacle(canvas, camera, o.polygon, palette);
   }

@@ -1,6 +1,6 @@
 #pragma once
-/// The world-space layer of a frame: ground, bay lines, walls, tyre marks, obstacles, parked cars
-/// and the player (the metre grid only with the debug overlay).
+/// The world-space layer of a frame: ground, bay lines, the goal bay, tyre marks, headlight beams,
+/// walls, obstacles, parked cars and the player (the metre grid only with the debug overlay).
 
 #include "geometry/obb2.hpp"
 #include "render/camera.hpp"
@@ -18,8 +18,9 @@ inline constexpr double kWallThicknessM = 0.6;
 void drawGroundGrid(Canvas& canvas, const Camera& camera, const Palette& palette,
                     const Aabb2* clip = nullptr);
 
-/// Ground, bay lines, walls, tyre marks, obstacles and parked cars in view, then the player at
-/// `player_box`; hit flashes, dents and lamps from `options.effects` when set.
+/// Ground, bay lines, markings, the level's goal bay (`options.goal`), tyre marks, the player's
+/// headlight beams, walls, obstacles and parked cars in view, then the player at `player_box`;
+/// hit flashes, dents and lamps from `options.effects` when set.
 void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
                     const Obb2& player_box, const DrawOptions& options, const Palette& palette);
 

@@ -5,8 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "../sim/scene_builders.hpp"
+#include "io/replay_runner.hpp"
+#include "io/replay_text.hpp"
+#include "io/scene_json.hpp"
+#include "recording_canvas.hpp"
+#include "render/hud.hpp"
 #include "render/shapes.hpp"
 #include "render/world_layer.hpp"
 
@@ -71,7 +77,12 @@ TEST(CameraRig, RigCameraNeverShowsVoidBeyondTheWallsOfALargeLot) {
       world.step(InputFrame{});
       rig.step(world);
     }
-    const Aabb2 view = shown(rig.camera({1280, 720}, 0.5, 1.0, {15.0f, -15.0f}));
+    const Camera c = rig.camera({1280, 720}, 0.5, 1.0, {15.0f, -15.0f});
+    // Beyond the walls only under the HUD's strips.
+    const ViewInsets hud = hudInsets(c.viewport);
+    Aabb2 view = shown(c);
+    view.max.y() -= hud.top / c.pixels_per_metre;
+    view.min.y() += hud.bottom / c.pixels_per_metre;
     const Aabb2 walls = *cameraBounds(world.scene());
     EXPECT_GE(view.min.x(), walls.min.x() - 1e-9);
     EXPECT_GE(view.min.y(), walls.min.y() - 1e-9);
@@ -102,7 +113,15 @@ TEST(CameraRig, LookAheadPointsAlongTheVelocity) {
   }
   World still(sceneWith({}, 3.0, 4.0, 0.0));
   CameraRig rig(still, {1280, 720});
-  EXPECT_EQ(rig.camera({1280, 720}).center, Eigen::Vector2d(3.0, 4.0));
+  // A car at rest is in the middle of the view between the HUD's strips.
+  const ViewInsets hud = hudInsets({1280, 720});
+  const Eigen::Vector2f car = rig.camera({1280, 720}).toScreen({3.0, 4.0});
+  EXPECT_NEAR(car.x(), 640.0f, 1e-3f);
+  EXPECT_NEAR(car.y(), 0.5f * (hud.top + 720.0f - hud.bottom), 1e-3f);
+  CameraRigSettings whole;
+  whole.clear_hud = false;
+  EXPECT_EQ(CameraRig(still, {1280, 720}, whole).camera({1280, 720}).center,
+            Eigen::Vector2d(3.0, 4.0));
   EXPECT_EQ(rig.speedZoom(), 1.0);
 }
 
@@ -135,12 +154,15 @@ TEST(CameraRig, BaseZoomIsFittedToTheSceneWithinLimits) {
   World world(std::move(garage));
   const CameraRig rig(world, {1280, 720});
   const CameraRigSettings s;
-  EXPECT_NEAR(rig.baseZoom(), fittedZoom(*cameraBounds(world.scene()), {1280, 720}, s.fit_margin),
-              1e-12);
-  // A fitted garage shows all of it.
-  const Aabb2 view = shown(rig.camera({1280, 720}));
+  const ViewInsets hud = hudInsets({1280, 720});
+  EXPECT_NEAR(rig.baseZoom(),
+              fittedZoom(*cameraBounds(world.scene()), {1280, 720}, s.fit_margin, hud), 1e-12);
+  // A fitted garage shows all of it, clear of the HUD.
+  const Camera c = rig.camera({1280, 720});
+  const Aabb2 view = shown(c);
   EXPECT_LE(view.min.x(), -18.0 - kWallThicknessM + 1e-9);
-  EXPECT_GE(view.max.y(), 9.5 + kWallThicknessM - 1e-9);
+  EXPECT_GE(view.max.y() - hud.top / c.pixels_per_metre, 9.5 + kWallThicknessM - 1e-9);
+  EXPECT_LE(view.min.y() + hud.bottom / c.pixels_per_metre, -9.5 - kWallThicknessM + 1e-9);
   Scene big = sceneWith({});
   big.bounds = Aabb2{{-1000.0, -1000.0}, {1000.0, 1000.0}};
   EXPECT_EQ(CameraRig(World(std::move(big)), {1280, 720}).baseZoom(), s.min_fit_ppm);
@@ -156,6 +178,62 @@ TEST(CameraRig, BigLotStartsWithCarsAbout100PixelsLong) {
     const Camera c = CameraRig(world, vp).camera(vp);
     EXPECT_GE(world.scene().player.length * c.pixels_per_metre, 100.0) << vp.transpose();
     EXPECT_LT(fittedZoom(*cameraBounds(world.scene()), vp, 1.04), c.pixels_per_metre);
+  }
+}
+
+// Where a world box lands on screen: (min, max) pixels.
+std::pair<Eigen::Vector2f, Eigen::Vector2f> screenBox(const Camera& c, const Obb2& box) {
+  Eigen::Vector2f lo{1e30f, 1e30f};
+  Eigen::Vector2f hi{-1e30f, -1e30f};
+  for (const Eigen::Vector2f& p : projectObb(c, box)) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return {lo, hi};
+}
+
+// The box is on screen, below the HUD panel at the top (and the timer beside it) and above the
+// status line at the bottom.
+void expectClearOfTheHud(const World& world, const Camera& c, const Obb2& box,
+                         const std::string& what) {
+  test::RecordingCanvas canvas(c.viewport);
+  DrawOptions player;
+  player.status = "attempt 2";
+  const float hud_bottom = drawHud(canvas, world, player).y();
+  const auto [lo, hi] = screenBox(c, box);
+  EXPECT_GE(lo.x(), 0.0f) << what;
+  EXPECT_LE(hi.x(), static_cast<float>(c.viewport.x())) << what;
+  EXPECT_GE(lo.y(), hud_bottom) << what << ": under the HUD panel";
+  EXPECT_LE(hi.y(), statusLineTop(c.viewport)) << what << ": under the status line";
+}
+
+// Every level, in the usual window shapes: at the start and once parked, the goal bay and the
+// start are framed clear of the HUD's panels.
+TEST(CameraRig, LevelsKeepTheBayAndTheStartClearOfTheHud) {
+  const std::string dir = std::string(CARDEMO_SOURCE_DIR) + "/assets/";
+  for (const char* level :
+       {"level-1-straight", "level-2-reverse", "level-3-parallel", "level-4-garage"}) {
+    const Parsed<Replay> replay = loadReplay(dir + "replays/" + level + ".replay");
+    ASSERT_TRUE(replay.ok()) << level;
+    const Parsed<Scene> scene = loadScene(dir + "scenes/levels/" + level + ".json");
+    ASSERT_TRUE(scene.ok()) << level;
+    const Scene& s = scene.value();
+    ASSERT_TRUE(s.goal.has_value());
+    const ParkingBay& bay = s.goal->bay;
+    const Obb2 bay_box = Obb2::fromDegrees(bay.center, bay.heading_deg, bay.length, bay.width);
+    const Obb2 start =
+        Obb2::fromDegrees(s.player.position, s.player.heading_deg, s.player.length, s.player.width);
+    for (const Eigen::Vector2i& vp : {Eigen::Vector2i(1280, 720), Eigen::Vector2i(1280, 800),
+                                      Eigen::Vector2i(1920, 1080), Eigen::Vector2i(1024, 768)}) {
+      const std::string at =
+          std::string(level) + " at " + std::to_string(vp.x()) + "x" + std::to_string(vp.y());
+      World world(s, settingsForReplay(replay.value()));
+      CameraRig rig(world, vp);
+      expectClearOfTheHud(world, rig.camera(vp), bay_box, at + ", start: the bay");
+      expectClearOfTheHud(world, rig.camera(vp), start, at + ", start: the car");
+      runReplayInputs(world, replay.value(), [&rig](const World& w) { rig.step(w); });
+      expectClearOfTheHud(world, rig.camera(vp), bay_box, at + ", parked: the bay");
+    }
   }
 }
 

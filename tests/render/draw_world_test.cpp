@@ -6,8 +6,11 @@
 
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "../sim/scene_builders.hpp"
+#include "io/replay_runner.hpp"
+#include "io/replay_text.hpp"
 #include "recording_canvas.hpp"
 #include "render/debug_overlay.hpp"
 #include "render/hud.hpp"
@@ -322,19 +325,21 @@ TEST(Hud, HealthColourGoesFromRedToGreen) {
   EXPECT_EQ(healthColor(-1.0), empty);
 }
 
-TEST(Hud, APlayerSeesSpeedAndHitsTheOverlayAddsFrameAndFps) {
+TEST(Hud, APlayerSeesSpeedAndCrashesTheOverlayAddsFrameHitsAndFps) {
   World world(sceneWith({}));
   Camera camera;
   DrawOptions playing;
   playing.fps = 59.6;
   const RecordingCanvas plain = drawn(world, camera, playing);
   EXPECT_TRUE(plain.hasText("km/h"));
-  EXPECT_TRUE(plain.hasText("Hits"));
+  EXPECT_TRUE(plain.hasText("Crashes"));
+  EXPECT_FALSE(plain.hasText("Hits"));
   EXPECT_FALSE(plain.hasText("Frame"));
   EXPECT_FALSE(plain.hasText("FPS"));
   playing.debug_overlay = true;
   const RecordingCanvas overlay = drawn(world, camera, playing);
   EXPECT_TRUE(overlay.hasText("Frame"));
+  EXPECT_TRUE(overlay.hasText("Hits"));
   EXPECT_TRUE(overlay.hasText("FPS"));
   DrawOptions rendered;
   rendered.frame_counter = true;
@@ -354,8 +359,8 @@ TEST(Hud, ShowsSpeedFrameFpsPlaybackStatusAndPaused) {
   options.paused = true;
   options.status = "recording to drive.replay";
   const RecordingCanvas canvas = drawn(world, camera, options);
-  for (const char* text :
-       {"km/h", "Hits", "Frame", "FPS", "60", "2x", "PAUSED", "recording to drive.replay"}) {
+  for (const char* text : {"km/h", "Crashes", "Hits", "Frame", "FPS", "60", "2x", "PAUSED",
+                           "recording to drive.replay"}) {
     EXPECT_TRUE(canvas.hasText(text)) << text;
   }
 }
@@ -434,6 +439,97 @@ TEST(Hud, GameOverPanelListsTheKeysItIsGiven) {
   const RecordingCanvas canvas = drawn(world, camera, options);
   EXPECT_TRUE(canvas.hasText("Enter retry    Esc levels"));
   EXPECT_FALSE(canvas.hasText("Enter restart    Esc quit"));
+}
+
+// The value drawn on the same row as `label` (to its right), or "" when there is no such row.
+std::string rowValue(const RecordingCanvas& canvas, const std::string& label) {
+  for (const auto& t : canvas.texts) {
+    if (t.text != label) continue;
+    for (const auto& v : canvas.texts) {
+      if (&v != &t && v.at.y() == t.at.y() && v.at.x() > t.at.x()) return v.text;
+    }
+  }
+  return "";
+}
+
+// A bundled replay run to its end.
+World replayed(const std::string& name) {
+  const std::string path = std::string(CARDEMO_SOURCE_DIR) + "/assets/replays/" + name;
+  const Parsed<Replay> replay = loadReplay(path);
+  EXPECT_TRUE(replay.ok()) << path;
+  Parsed<Scene> scene = loadReplayScene(replay.value(), path, "");
+  EXPECT_TRUE(scene.ok()) << path;
+  World world(std::move(scene).value(), settingsForReplay(replay.value()));
+  runReplayInputs(world, replay.value());
+  return world;
+}
+
+// A bounce inside one crash, or a touch too gentle to cost anything, is not another crash for the
+// player; the raw count of first touches stays a developer row.
+TEST(Hud, CountsDamagingCrashesNotEveryTouch) {
+  // head-on: one crash and its bounces; graze: touches below the damage threshold; garage: two
+  // crashes, the second with a free re-touch.
+  for (const char* name : {"head-on.replay", "graze.replay", "garage.replay"}) {
+    const World world = replayed(name);
+    std::set<std::int64_t> damaging;
+    for (const HitEvent& h : world.hits()) {
+      if (h.damage > 0) damaging.insert(h.crash);
+    }
+    ASSERT_LT(damaging.size(), world.hits().size()) << name << ": every touch is a crash";
+    const std::string crashes = std::to_string(damaging.size());
+    const Camera camera = followCamera(world.carBox(), 30.0, kViewport);
+    const RecordingCanvas player = drawn(world, camera);
+    EXPECT_EQ(rowValue(player, "Crashes"), crashes) << name;
+    EXPECT_FALSE(player.hasText("Hits")) << name;
+    DrawOptions debug;
+    debug.debug_overlay = true;
+    const RecordingCanvas overlay = drawn(world, camera, debug);
+    EXPECT_EQ(rowValue(overlay, "Crashes"), crashes) << name;
+    EXPECT_EQ(rowValue(overlay, "Hits"), std::to_string(world.hits().size())) << name;
+  }
+}
+
+TEST(Hud, GameOverPanelCountsCrashes) {
+  World world = crashedWorld();
+  ASSERT_TRUE(world.gameOver());
+  const RecordingCanvas canvas = drawn(world, followCamera(world.carBox(), 20.0, kViewport));
+  const RecordingCanvas::Text* title = canvas.lastText("GAME OVER");
+  ASSERT_NE(title, nullptr);
+  bool crashes_row = false;
+  for (const auto& t : canvas.texts) {
+    if (t.order < title->order) continue;
+    EXPECT_NE(t.text, "Hits") << "the GAME OVER panel lists raw touches";
+    crashes_row = crashes_row || t.text == "Crashes";
+  }
+  EXPECT_TRUE(crashes_row);
+}
+
+TEST(Hud, DamagingCrashesCountEachCrashOnceAndOnlyWithDamage) {
+  const auto hit = [](std::int64_t crash, int damage) {
+    HitEvent h;
+    h.crash = crash;
+    h.damage = damage;
+    return h;
+  };
+  EXPECT_EQ(damagingCrashes({}), 0);
+  // A gentle touch (crash 1), a crash charged twice as it grew (2), a free bounce in it, another
+  // collider's crash in between (3).
+  EXPECT_EQ(damagingCrashes({hit(1, 0), hit(2, 6), hit(3, 12), hit(2, 4), hit(2, 0)}), 2);
+  // A crash whose first touch was gentle and whose re-touch cost something counts once.
+  EXPECT_EQ(damagingCrashes({hit(1, 0), hit(1, 5)}), 1);
+}
+
+TEST(Hud, InsetsCoverThePlayersPanelAndTheStatusLine) {
+  World world(sceneWith({}));
+  for (const Eigen::Vector2i& vp : {Eigen::Vector2i(1280, 720), Eigen::Vector2i(640, 480),
+                                    Eigen::Vector2i(1920, 1080), Eigen::Vector2i(3840, 2160)}) {
+    RecordingCanvas canvas(vp);
+    DrawOptions player;
+    player.status = "attempt 3";
+    const ViewInsets insets = hudInsets(vp);
+    EXPECT_LE(drawHud(canvas, world, player).y(), insets.top) << vp.transpose();
+    EXPECT_FLOAT_EQ(static_cast<float>(vp.y()) - insets.bottom, statusLineTop(vp));
+  }
 }
 
 }  // namespace

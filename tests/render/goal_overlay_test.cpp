@@ -10,6 +10,7 @@
 #include "../sim/scene_builders.hpp"
 #include "recording_canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/hud.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
@@ -31,6 +32,7 @@ RecordingCanvas overlay(const World& world, const ParkingChallenge& c, GoalView 
   RecordingCanvas canvas;
   view.challenge = &c;
   const Camera camera = followCamera(world.carBox(), 12.0, {1280, 720});
+  drawGoalBay(canvas, camera, view);
   drawGoalOverlay(canvas, world, camera, world.carBox(), view);
   return canvas;
 }
@@ -352,6 +354,57 @@ TEST(GoalOverlay, TaskPanelFitsANarrowWindow) {
   const auto panel = taskPanel(canvas);
   EXPECT_GE(panel.first.x(), 0.0f);
   EXPECT_LE(panel.second.x(), 640.0f);
+}
+
+// The bay's outline is paint on the ground: the player's car, driving over it, covers it.
+TEST(GoalOverlay, BayOutlineIsDrawnUnderThePlayersCar) {
+  Scene scene = bayScene(2.0);
+  scene.goal->bay.center.y() = 0.5;  // overlapping the car, too far off to be ready: yellow
+  const World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  GoalView view;
+  view.challenge = &c;
+  DrawOptions options;
+  options.goal = &view;
+  RecordingCanvas canvas;
+  drawFrame(canvas, world, followCamera(world.carBox(), 30.0, {1280, 720}), world.carBox(),
+            options);
+  const auto body = canvas.fillsOf(Palette{}.player);
+  ASSERT_EQ(body.size(), 1u);
+  int outline = 0;
+  for (const RecordingCanvas::Line& l : canvas.lines) {
+    if (!(l.color == Rgba{255, 214, 70, 255})) continue;
+    ++outline;
+    EXPECT_LT(l.order, body.front().order) << "the bay's outline is drawn over the car";
+  }
+  EXPECT_EQ(outline, 4);
+  // The timer stays on top of the world.
+  const RecordingCanvas::Text* timer = canvas.lastText("par 12.0 s");
+  ASSERT_NE(timer, nullptr);
+  EXPECT_GT(timer->order, body.front().order);
+}
+
+// The camera keeps the level out of the HUD's top strip (hudInsets); the timer must fit in it.
+TEST(GoalOverlay, TimerFitsInTheHudsTopStrip) {
+  const Scene scene = bayScene(10.0);
+  const World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  GoalView view;
+  view.challenge = &c;
+  for (const Eigen::Vector2i& vp :
+       {Eigen::Vector2i(1280, 720), Eigen::Vector2i(640, 480), Eigen::Vector2i(1920, 1080)}) {
+    RecordingCanvas canvas(vp);
+    drawGoalOverlay(canvas, world, followCamera(world.carBox(), 12.0, vp), world.carBox(), view);
+    const RecordingCanvas::Text* detail = canvas.lastText("par 12.0 s");
+    ASSERT_NE(detail, nullptr);
+    const RecordingCanvas::Fill* panel = backdropOf(canvas, *detail);
+    ASSERT_NE(panel, nullptr);
+    for (const Eigen::Vector2f& p : panel->points) {
+      EXPECT_LE(p.y(), hudInsets(vp).top) << vp.transpose();
+    }
+  }
 }
 
 }  // namespace

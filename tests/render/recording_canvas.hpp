@@ -15,7 +15,7 @@ class RecordingCanvas : public Canvas {
   struct Fill {
     std::vector<Eigen::Vector2f> points;  ///< Pixels.
     Rgba color;                           ///< Fill colour.
-    int order;                            ///< Place among the fills and texts, from 0.
+    int order;                            ///< Place among the fills, lines and texts, from 0.
     /// Mean of the points.
     [[nodiscard]] Eigen::Vector2f centroid() const {
       Eigen::Vector2f c = Eigen::Vector2f::Zero();
@@ -34,13 +34,14 @@ class RecordingCanvas : public Canvas {
     Eigen::Vector2f a, b;  ///< Ends, pixels.
     float thickness;       ///< Pixels.
     Rgba color;            ///< Colour.
+    int order;             ///< Place among the fills, lines and texts, from 0.
   };
   /// A text call.
   struct Text {
     Eigen::Vector2f at;  ///< Top-left, pixels.
     std::string text;    ///< UTF-8.
     Rgba color;          ///< Colour.
-    int order;           ///< Place among the fills and texts, from 0.
+    int order;           ///< Place among the fills, lines and texts, from 0.
   };
 
   /// An image call.
@@ -67,7 +68,7 @@ class RecordingCanvas : public Canvas {
   }
   void line(const Eigen::Vector2f& a, const Eigen::Vector2f& b, float thickness,
             const Rgba& color) override {
-    lines.push_back({a, b, thickness, color});
+    lines.push_back({a, b, thickness, color, calls_++});
   }
   void text(const Eigen::Vector2f& top_left, std::string_view utf8, int,
             const Rgba& color) override {
