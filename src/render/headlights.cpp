@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -74,14 +75,23 @@ struct Occluders {
   std::vector<const ConvexPolygon*> polygons;
 };
 
-Occluders occludersNear(const Scene& scene, const Aabb2& lit) {
+Occluders occludersNear(const World& world, const Aabb2& lit) {
+  const Scene& scene = world.scene();
   Occluders o;
   if (scene.bounds) o.bounds = &*scene.bounds;
-  for (const ParkedCar& car : scene.parked) {
-    if (car.box.aabb().overlaps(lit)) o.boxes.push_back(car.box.corners());
+  // The World's collider bounds are built once (parked cars first, then obstacles), so a frame
+  // only compares boxes here rather than recomputing every car's bounds.
+  const StaticColliders& colliders = world.colliders();
+  const std::size_t parked = scene.parked.size();
+  for (std::size_t i = 0; i < parked; ++i) {
+    if (colliders.bounds(static_cast<std::uint32_t>(i)).overlaps(lit)) {
+      o.boxes.push_back(scene.parked[i].box.corners());
+    }
   }
-  for (const Obstacle& obstacle : scene.obstacles) {
-    if (obstacle.polygon.aabb().overlaps(lit)) o.polygons.push_back(&obstacle.polygon);
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    if (colliders.bounds(static_cast<std::uint32_t>(parked + i)).overlaps(lit)) {
+      o.polygons.push_back(&scene.obstacles[i].polygon);
+    }
   }
   return o;
 }
@@ -99,7 +109,7 @@ double reach(const Ray& ray, const Occluders& o) {
 
 }  // namespace
 
-void drawHeadlightBeams(Canvas& canvas, const Camera& camera, const Scene& scene, const Obb2& box,
+void drawHeadlightBeams(Canvas& canvas, const Camera& camera, const World& world, const Obb2& box,
                         const Palette& palette) {
   const double hx = box.half.x();
   const double hy = box.half.y();
@@ -109,7 +119,7 @@ void drawHeadlightBeams(Canvas& canvas, const Camera& camera, const Scene& scene
   const double far = hx + kBeamLengthM;
   const Eigen::Vector2d reach_half{0.5 * kBeamLengthM, hy + 1.0};
   const Aabb2 lit = Obb2{at(hx + 0.5 * kBeamLengthM, 0.0), box.axis, reach_half}.aabb();
-  const Occluders occluders = occludersNear(scene, lit);
+  const Occluders occluders = occludersNear(world, lit);
   Rgba beam = palette.headlight;
   beam.a = kBeamAlpha;
   for (const double side : {1.0, -1.0}) {

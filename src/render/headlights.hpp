@@ -6,7 +6,7 @@
 #include "render/camera.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
-#include "sim/scene.hpp"
+#include "sim/world.hpp"
 
 namespace cardemo {
 
@@ -15,7 +15,7 @@ inline constexpr double kBeamLengthM = 3.2;
 
 /// Two beams ahead of the car `box` (nose along box.axis), each a fan of slices cut short where
 /// its rays meet a parked car, an obstacle or the scene's walls.
-void drawHeadlightBeams(Canvas& canvas, const Camera& camera, const Scene& scene, const Obb2& box,
+void drawHeadlightBeams(Canvas& canvas, const Camera& camera, const World& world, const Obb2& box,
                         const Palette& palette);
 
 }  // namespace cardemo

@@ -97,7 +97,7 @@ void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
   if (options.goal != nullptr) drawGoalBay(canvas, camera, *options.goal);
   if (fx != nullptr) drawSkidMarks(canvas, camera, *fx, palette);
   // Light on the ground: under the walls and the cars, which would otherwise be painted over.
-  drawHeadlightBeams(canvas, camera, scene, player_box, palette);
+  drawHeadlightBeams(canvas, camera, world, player_box, palette);
   if (scene.bounds) drawWalls(canvas, camera, *scene.bounds, palette);
   for (const Obstacle& o : scene.obstacles) {
     if (o.polygon.aabb().overlaps(view)) drawObstacle(canvas, camera, o.polygon, palette);
