@@ -3,7 +3,8 @@
 
 Every version of docs/perf/bench.json that git holds is one run of scripts/perf_report.py. For the
 newest N of them (default 6) the script prints the run's start (from the benchmark's own context),
-the commit that saved it, its repetitions and load average, and the fastest repetition of a few
+the commit that saved it, the machine (its MHz as reported and its widest batch path: the sessions
+do not all run on the same CPU), its repetitions and load average, and the fastest repetition of a few
 sentinel rows. Rows that did not change between two runs show how much a run on a shared machine
 moves by itself.
 
@@ -62,14 +63,15 @@ def main(argv):
         data = json.loads(git("show", f"{commit}:{PATH}"))
         runs.append((commit, data))
     print("Fastest repetition of each row, ns per item (pair, query, step or frame).\n")
-    header = ["run (start)", "saved in", "reps", "load avg"] + [f"`{r}`" for r in args.rows]
+    header = ["run (start)", "saved in", "machine", "reps", "load avg"] + [f"`{r}`" for r in args.rows]
     print("| " + " | ".join(header) + " |")
     print("|" + "---|" * len(header))
     for commit, data in runs:
         ctx = data["context"]
         load = ctx.get("load_avg") or []
         times = fastest(data)
-        cells = [ctx.get("date", "?")[:16].replace("T", " "), commit, str(repetitions(data)),
+        machine = f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('batch_path', '?')}"
+        cells = [ctx.get("date", "?")[:16].replace("T", " "), commit, machine, str(repetitions(data)),
                  f"{load[0]:.2f}" if load else "?"]
         cells += [f"{times[r]:,.1f}" if r in times else "-" for r in args.rows]
         print("| " + " | ".join(cells) + " |")

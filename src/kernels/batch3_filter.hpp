@@ -119,7 +119,8 @@ std::size_t runFilteredOverlap3(const Box3FilterOne& fa, const Box3FilterArrays&
   const FilterQuery3<F> q = splatQuery3<F>(fa);
   const Box3FilterArrays b = fb;
   return runFilteredByBox<F::kWidth>(
-      first, last, hit, [&q, b](std::size_t i) { return filter3<F>(q, b, i); }, exact_boxes);
+      first, last, hit, [&q, b](std::size_t i) { return filter3<F>(q, b, i); }, exact_boxes,
+      [](std::size_t) {});
 }
 
 }  // namespace

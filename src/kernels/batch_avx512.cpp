@@ -1,6 +1,6 @@
 // The batch kernels with AVX-512F: the 2D boolean SAT through the float pre-filter, sixteen pairs
 // per instruction, and every double kernel eight pairs per instruction (the 2D SAT with separation
-// and normal, the 2D boolean SAT for the lane groups the filter leaves undecided, and both 3D
+// and normal, the 2D boolean SAT for the boxes the filter leaves undecided, and both 3D
 // kernels with their A-frame filter). Built with -mavx512f (CMakeLists.txt) and called only after
 // batchPathAvailable says the CPU has it.
 //
@@ -137,9 +137,34 @@ struct Double8 {
 std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                    const Box2FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit) {
-  return runFilteredOverlap2<Float16>(
+  const double* source[6] = {b.cx, b.cy, b.ux, b.uy, b.hx, b.hy};
+  return runFilteredOverlap2ByBox<Float16>(
       fa, fb, first, last, hit,
-      [&](std::size_t i0, std::size_t i1) { runOverlap2<Double8>(a, b, i0, i1, hit); });
+      [&](const std::size_t* boxes, std::size_t count) {
+        // The open boxes, eight at a time, copied into one lane group (the last box repeated to
+        // fill it) and decided by the double kernel.
+        alignas(64) double fields[6][8];
+        const Box2Arrays group{fields[0], fields[1], fields[2], fields[3], fields[4], fields[5]};
+        for (std::size_t k = 0; k < count; k += 8) {
+          const std::size_t lanes = count - k < 8 ? count - k : 8;
+          for (std::size_t f = 0; f < 6; ++f) {
+            for (std::size_t l = 0; l < 8; ++l) {
+              fields[f][l] = source[f][boxes[k + (l < lanes ? l : lanes - 1)]];
+            }
+          }
+          std::uint8_t group_hit[8];
+          storeHits(group_hit, separated2<Double8>(a, group, 0));
+          for (std::size_t l = 0; l < lanes; ++l) hit[boxes[k + l]] = group_hit[l];
+        }
+      },
+      [&](std::size_t i) {
+        // The group's double fields, read when the buffer of open boxes is next decided:
+        // without this, those sparse reads miss the caches once the batch is larger than they are.
+        for (std::size_t f = 0; f < 6; ++f) {
+          __builtin_prefetch(source[f] + i);
+          __builtin_prefetch(source[f] + i + 8);
+        }
+      });
 }
 
 void overlap2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,

@@ -1,8 +1,9 @@
 #pragma once
 /// Internal to the batch kernels: the loops that run the float pre-filters of the 2D and 3D boolean
 /// SATs (batch2_filter.hpp, batch3_filter.hpp). They write every verdict the filter decides and
-/// hand the undecided boxes to the double kernel: the whole lane group for the cheap 2D kernel,
-/// the undecided boxes alone for the costly 3D one.
+/// hand the undecided boxes to the double kernel: the whole lane group for the cheap 2D kernel on
+/// eight lanes, the undecided boxes alone for the 2D kernel on sixteen lanes (where most groups
+/// hold an open lane) and for the costly 3D one.
 //
 // Included by the filter headers only; everything here has internal linkage.
 
@@ -77,11 +78,14 @@ std::size_t runFiltered(std::size_t first, std::size_t last, std::uint8_t* hit,
 
 // As runFiltered, but the undecided boxes go on one by one: their indices are gathered, and
 // `exact_boxes(indices, count)` (the double kernel on those boxes alone, writing hit[indices[k]])
-// runs once a buffer of them has filled, and at the end. For a double kernel too costly to run on
-// a whole lane group for one undecided lane.
-template <std::size_t kWidth, class Filter, class ExactBoxes>
+// runs once a buffer of them has filled, and at the end. `on_open(i)` is called for each lane
+// group at box i with an open lane, before its boxes join the buffer (to prefetch what
+// exact_boxes will read). For a double kernel too costly to run on a whole lane group for one
+// undecided lane.
+template <std::size_t kWidth, class Filter, class ExactBoxes, class OnOpen>
 std::size_t runFilteredByBox(std::size_t first, std::size_t last, std::uint8_t* hit,
-                             const Filter& filter, const ExactBoxes& exact_boxes) {
+                             const Filter& filter, const ExactBoxes& exact_boxes,
+                             const OnOpen& on_open) {
   constexpr std::size_t kPending = 64;
   std::size_t pending[kPending + kWidth];
   std::size_t count = 0, undecided = 0;
@@ -91,6 +95,7 @@ std::size_t runFilteredByBox(std::size_t first, std::size_t last, std::uint8_t* 
     if (open == 0) [[likely]]
       continue;
     undecided += static_cast<std::size_t>(__builtin_popcount(open));
+    on_open(i);
     for (; open != 0; open &= open - 1) {
       pending[count++] = i + static_cast<std::size_t>(__builtin_ctz(open));
     }
