@@ -141,21 +141,11 @@ std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const 
   return runFilteredOverlap2ByBox<Float16>(
       fa, fb, first, last, hit,
       [&](const std::size_t* boxes, std::size_t count) {
-        // The open boxes, eight at a time, copied into one lane group (the last box repeated to
-        // fill it) and decided by the double kernel.
-        alignas(64) double fields[6][8];
-        const Box2Arrays group{fields[0], fields[1], fields[2], fields[3], fields[4], fields[5]};
-        for (std::size_t k = 0; k < count; k += 8) {
-          const std::size_t lanes = count - k < 8 ? count - k : 8;
-          for (std::size_t f = 0; f < 6; ++f) {
-            for (std::size_t l = 0; l < 8; ++l) {
-              fields[f][l] = source[f][boxes[k + (l < lanes ? l : lanes - 1)]];
-            }
-          }
-          std::uint8_t group_hit[8];
-          storeHits(group_hit, separated2<Double8>(a, group, 0));
-          for (std::size_t l = 0; l < lanes; ++l) hit[boxes[k + l]] = group_hit[l];
-        }
+        decideOpenBoxes<8>(source, boxes, count, hit,
+                           [&](const double(&f)[6][8], std::uint8_t* group_hit) {
+                             const Box2Arrays group{f[0], f[1], f[2], f[3], f[4], f[5]};
+                             storeHits(group_hit, separated2<Double8>(a, group, 0));
+                           });
       },
       [&](std::size_t i) {
         // The group's double fields, read when the buffer of open boxes is next decided:

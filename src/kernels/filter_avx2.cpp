@@ -69,30 +69,15 @@ std::size_t overlap3FilteredAvx2(const Box3One& a, const Box3Arrays& b, const Bo
                                  std::uint8_t* hit) {
   return runFilteredOverlap3<Float8>(
       fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
-        // The open boxes, four at a time, copied into one lane group (the last box repeated to
-        // fill it) and decided by the double kernel.
-        alignas(32) double fields[15][4];
         const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
                                     b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
-        const Box3Arrays group{fields[0],
-                               fields[1],
-                               fields[2],
-                               {fields[3], fields[4], fields[5], fields[6], fields[7], fields[8],
-                                fields[9], fields[10], fields[11]},
-                               fields[12],
-                               fields[13],
-                               fields[14]};
-        for (std::size_t k = 0; k < count; k += 4) {
-          const std::size_t lanes = count - k < 4 ? count - k : 4;
-          for (std::size_t f = 0; f < 15; ++f) {
-            for (std::size_t l = 0; l < 4; ++l) {
-              fields[f][l] = source[f][boxes[k + (l < lanes ? l : lanes - 1)]];
-            }
-          }
-          std::uint8_t group_hit[4];
-          overlap3Avx2(a, group, 0, 4, group_hit);
-          for (std::size_t l = 0; l < lanes; ++l) hit[boxes[k + l]] = group_hit[l];
-        }
+        decideOpenBoxes<4>(
+            source, boxes, count, hit, [&](const double(&f)[15][4], std::uint8_t* group_hit) {
+              const Box3Arrays group{
+                  f[0],  f[1],  f[2], {f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]},
+                  f[12], f[13], f[14]};
+              overlap3Avx2(a, group, 0, 4, group_hit);
+            });
       });
 }
 

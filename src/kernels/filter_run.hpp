@@ -108,5 +108,26 @@ std::size_t runFilteredByBox(std::size_t first, std::size_t last, std::uint8_t* 
   return undecided;
 }
 
+// Decides the open boxes boxes[0, count) kLanes at a time: copies field f of each from source[f]
+// into one lane group (the last box repeated to fill it), calls `decide(fields, group_hit)` (the
+// double kernel on that group, group_hit[l] = 1 when lane l overlaps) and writes the verdicts of
+// the live lanes to hit. The exact_boxes of runFilteredByBox, less the kernel.
+template <std::size_t kLanes, std::size_t kFields, class Decide>
+void decideOpenBoxes(const double* const (&source)[kFields], const std::size_t* boxes,
+                     std::size_t count, std::uint8_t* hit, const Decide& decide) {
+  alignas(64) double fields[kFields][kLanes];
+  for (std::size_t k = 0; k < count; k += kLanes) {
+    const std::size_t lanes = count - k < kLanes ? count - k : kLanes;
+    for (std::size_t f = 0; f < kFields; ++f) {
+      for (std::size_t l = 0; l < kLanes; ++l) {
+        fields[f][l] = source[f][boxes[k + (l < lanes ? l : lanes - 1)]];
+      }
+    }
+    std::uint8_t group_hit[kLanes];
+    decide(fields, group_hit);
+    for (std::size_t l = 0; l < lanes; ++l) hit[boxes[k + l]] = group_hit[l];
+  }
+}
+
 }  // namespace
 }  // namespace cardemo::batch_detail
