@@ -107,15 +107,6 @@ void drawHealthLabel(Canvas& canvas, const Eigen::Vector2f& top_left, const Eige
   canvas.text(at, label, h, kText);
 }
 
-std::int64_t damagingCrashes(const std::vector<HitEvent>& hits) {
-  std::vector<std::int64_t> crashes;
-  for (const HitEvent& h : hits) {
-    if (h.damage > 0) crashes.push_back(h.crash);
-  }
-  std::sort(crashes.begin(), crashes.end());
-  return std::unique(crashes.begin(), crashes.end()) - crashes.begin();
-}
-
 HealthBarRect healthBarRect(const Eigen::Vector2i& viewport) {
   const float s = hudScale(viewport);
   const float pad = 10.0f * s;
@@ -159,7 +150,7 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
                   options.run_over ? std::string("stopped")
                                    : format("%.0f km/h", std::abs(world.car().speed) * 3.6),
                   kText});
-  rows.push_back({"Crashes", std::to_string(damagingCrashes(world.hits())), kText});
+  rows.push_back({"Crashes", std::to_string(world.damagingCrashes()), kText});
   // Developer rows: a player driving sees speed and crashes; the debug overlay (B), a replay's
   // playback and `cardemo render` add the frame, the overlay the raw hits (every first touch, as
   // the summary JSON counts them) and the frame rate.
@@ -224,7 +215,7 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
   if (panel.rows.empty()) {
     panel.rows = {
         {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
-        {"Crashes", std::to_string(damagingCrashes(world.hits()))},
+        {"Crashes", std::to_string(world.damagingCrashes())},
         {"Damage", std::to_string(world.scene().player.health - world.health())}};
   }
   drawEndPanel(canvas, camera, player_box, panel);

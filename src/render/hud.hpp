@@ -19,10 +19,6 @@ namespace cardemo {
 /// Size factor for HUD text and panels at a viewport height (1 at 720 px).
 [[nodiscard]] float hudScale(const Eigen::Vector2i& viewport);
 
-/// Crashes that cost health: distinct HitEvent::crash numbers among the hits with damage. A bounce
-/// inside a crash already charged, or a touch under the damage threshold, adds none.
-[[nodiscard]] std::int64_t damagingCrashes(const std::vector<HitEvent>& hits);
-
 /// Where the HUD draws the health bar in a viewport, pixels.
 struct HealthBarRect {
   Eigen::Vector2f top_left;  ///< Top-left corner.

@@ -590,13 +590,17 @@ void World::recordHits() {
       const double speed = contact_speed_[k];
       const int worth = impactDamage(speed);
       int damage = worth;
+      // A crash has cost health once anything is charged to it.
+      bool charged_before = false;
       if (frame_ <= crash_until_[id]) {
+        charged_before = crash_charged_[id] > 0;
         damage = std::max(0, worth - crash_charged_[id]);
         crash_charged_[id] += damage;
       } else {
         crash_of_[id] = ++crash_count_;
         crash_charged_[id] = worth;
       }
+      if (damage > 0 && !charged_before) ++damaging_crash_count_;
       health_ = std::max(0, health_ - damage);
       hits_.push_back(
           {frame_, id, colliderId(id), speed, damage, crash_of_[id], contact_fraction_});

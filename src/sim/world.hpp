@@ -118,6 +118,9 @@ class World {
   [[nodiscard]] int scrapeDamage() const { return scrape_damage_; }
   /// Crashes so far (a crash is one or more hits of one collider, see HitEvent::crash).
   [[nodiscard]] std::int64_t crashes() const { return crash_count_; }
+  /// Crashes that cost health: each counts once, from its first hit with damage (a touch under
+  /// the damage threshold, or a bounce inside a crash already charged, adds none).
+  [[nodiscard]] std::int64_t damagingCrashes() const { return damaging_crash_count_; }
   /// Every hit so far, in order.
   [[nodiscard]] const std::vector<HitEvent>& hits() const { return hits_; }
   /// Contacts at the current frame.
@@ -169,6 +172,7 @@ class World {
   std::vector<int> crash_charged_;
   std::vector<std::int64_t> crash_of_;
   std::int64_t crash_count_ = 0;
+  std::int64_t damaging_crash_count_ = 0;
   std::int64_t crash_window_frames_ = 0;
   std::int64_t scrape_frames_ = 0;  // frames spent scraping so far
   int scrape_damage_ = 0;           // damage charged for them

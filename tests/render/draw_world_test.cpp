@@ -504,21 +504,6 @@ TEST(Hud, GameOverPanelCountsCrashes) {
   EXPECT_TRUE(crashes_row);
 }
 
-TEST(Hud, DamagingCrashesCountEachCrashOnceAndOnlyWithDamage) {
-  const auto hit = [](std::int64_t crash, int damage) {
-    HitEvent h;
-    h.crash = crash;
-    h.damage = damage;
-    return h;
-  };
-  EXPECT_EQ(damagingCrashes({}), 0);
-  // A gentle touch (crash 1), a crash charged twice as it grew (2), a free bounce in it, another
-  // collider's crash in between (3).
-  EXPECT_EQ(damagingCrashes({hit(1, 0), hit(2, 6), hit(3, 12), hit(2, 4), hit(2, 0)}), 2);
-  // A crash whose first touch was gentle and whose re-touch cost something counts once.
-  EXPECT_EQ(damagingCrashes({hit(1, 0), hit(1, 5)}), 1);
-}
-
 TEST(Hud, InsetsCoverThePlayersPanelAndTheStatusLine) {
   World world(sceneWith({}));
   for (const Eigen::Vector2i& vp : {Eigen::Vector2i(1280, 720), Eigen::Vector2i(640, 480),

@@ -1,8 +1,12 @@
 // Fair damage: a threshold, one crash per collider within the crash window, scrapes by time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
+#include "../support/test_scale.hpp"
 #include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
@@ -16,6 +20,17 @@ using testing::kUp;
 
 using test::parkedCar;
 using test::sceneWith;
+
+// The brute-force twin of World::damagingCrashes: the distinct crash numbers among the hits that
+// cost health.
+std::int64_t damagingCrashesOf(const std::vector<HitEvent>& hits) {
+  std::vector<std::int64_t> crashes;
+  for (const HitEvent& h : hits) {
+    if (h.damage > 0) crashes.push_back(h.crash);
+  }
+  std::sort(crashes.begin(), crashes.end());
+  return std::unique(crashes.begin(), crashes.end()) - crashes.begin();
+}
 
 constexpr double kLean = 2.0 * 3.14159265358979323846 / 180.0;  // 2 degrees
 
@@ -85,6 +100,7 @@ TEST(WorldDamage, AHarderReTouchWithinTheWindowCostsTheExcessAndALaterOneIsANewC
   EXPECT_EQ(world.hits()[2].crash, 2);
   EXPECT_EQ(world.hits()[2].damage, static_cast<int>(std::ceil(3.0 * world.hits()[2].speed)));
   EXPECT_EQ(world.crashes(), 2);
+  EXPECT_EQ(world.damagingCrashes(), damagingCrashesOf(world.hits()));
 }
 
 TEST(WorldDamage, ScrapesCostByTimeExactly) {
@@ -126,6 +142,33 @@ TEST(WorldDamage, WallsNeverDamage) {
   EXPECT_EQ(world.scrapeDamage(), 0);
   EXPECT_EQ(world.health(), 100);
   EXPECT_EQ(world.crashes(), 0);
+}
+
+TEST(WorldDamage, DamagingCrashesEqualTheDistinctCrashesOfTheHitsThatCostHealth) {
+  // Random drives through random lots, checked after every step against the hits themselves.
+  // A gentle first touch whose re-touch costs health counts once, and so does a crash charged
+  // twice as it grew.
+  std::int64_t damaging = 0, gentle_then_charged = 0, charged_twice = 0;
+  for (int seed = 1; seed <= testing::scaledCount(30); ++seed) {
+    World world(test::parkingLot(static_cast<std::uint64_t>(seed)));
+    for (const InputFrame& in : test::scriptedDrive(static_cast<std::uint64_t>(seed), 3000)) {
+      world.step(in);
+      ASSERT_EQ(world.damagingCrashes(), damagingCrashesOf(world.hits()))
+          << "seed " << seed << " frame " << world.frame();
+    }
+    damaging += world.damagingCrashes();
+    const std::vector<HitEvent>& hits = world.hits();
+    for (std::size_t j = 0; j < hits.size(); ++j) {
+      for (std::size_t i = 0; i < j; ++i) {
+        if (hits[i].crash != hits[j].crash || hits[j].damage == 0) continue;
+        gentle_then_charged += hits[i].damage == 0 ? 1 : 0;
+        charged_twice += hits[i].damage > 0 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(damaging, 0);
+  // The cases that a count of damaging hits, or of crashes with a damaging first hit, gets wrong.
+  EXPECT_GT(gentle_then_charged + charged_twice, 0);
 }
 
 }  // namespace
