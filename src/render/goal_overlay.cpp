@@ -47,17 +47,6 @@ float drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   return tl.y() + h;
 }
 
-// Screen rectangle (min, max) around a world box.
-std::pair<Eigen::Vector2f, Eigen::Vector2f> screenRect(const Camera& camera, const Obb2& box) {
-  Eigen::Vector2f lo{1e30f, 1e30f};
-  Eigen::Vector2f hi{-1e30f, -1e30f};
-  for (const Eigen::Vector2f& p : projectObb(camera, box)) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return {lo, hi};
-}
-
 // Area of the rectangle [at, at + size] that the rectangles `avoid` cover (overlaps summed).
 float coveredArea(const Eigen::Vector2f& at, const Eigen::Vector2f& size,
                   const std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>>& avoid) {

@@ -11,6 +11,16 @@ std::array<Eigen::Vector2f, 4> projectObb(const Camera& camera, const Obb2& box)
           camera.toScreen(c[3])};
 }
 
+std::pair<Eigen::Vector2f, Eigen::Vector2f> screenRect(const Camera& camera, const Obb2& box) {
+  Eigen::Vector2f lo{1e30f, 1e30f};
+  Eigen::Vector2f hi{-1e30f, -1e30f};
+  for (const Eigen::Vector2f& p : projectObb(camera, box)) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return {lo, hi};
+}
+
 std::array<Eigen::Vector2f, 4> windscreenQuad(const Camera& camera, const Obb2& box) {
   const Eigen::Vector2d a = box.axis;
   const Eigen::Vector2d p = box.perp();

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <span>
+#include <utility>
 
 #include "geometry/aabb.hpp"
 #include "geometry/obb2.hpp"
@@ -14,6 +15,10 @@ namespace cardemo {
 
 /// The box's corners in pixels (counter-clockwise in the world, starting at local (+x, -y)).
 [[nodiscard]] std::array<Eigen::Vector2f, 4> projectObb(const Camera& camera, const Obb2& box);
+
+/// The screen rectangle (min and max corners, pixels) around a world box.
+[[nodiscard]] std::pair<Eigen::Vector2f, Eigen::Vector2f> screenRect(const Camera& camera,
+                                                                     const Obb2& box);
 
 /// The windscreen quad of a car box in pixels: a band across the front half, narrower at the front.
 [[nodiscard]] std::array<Eigen::Vector2f, 4> windscreenQuad(const Camera& camera, const Obb2& box);

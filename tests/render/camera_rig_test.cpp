@@ -181,17 +181,6 @@ TEST(CameraRig, BigLotStartsWithCarsAbout100PixelsLong) {
   }
 }
 
-// Where a world box lands on screen: (min, max) pixels.
-std::pair<Eigen::Vector2f, Eigen::Vector2f> screenBox(const Camera& c, const Obb2& box) {
-  Eigen::Vector2f lo{1e30f, 1e30f};
-  Eigen::Vector2f hi{-1e30f, -1e30f};
-  for (const Eigen::Vector2f& p : projectObb(c, box)) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return {lo, hi};
-}
-
 // The box is on screen, below the HUD panel at the top (and the timer beside it) and above the
 // status line at the bottom.
 void expectClearOfTheHud(const World& world, const Camera& c, const Obb2& box,
@@ -200,7 +189,7 @@ void expectClearOfTheHud(const World& world, const Camera& c, const Obb2& box,
   DrawOptions player;
   player.status = "attempt 2";
   const float hud_bottom = drawHud(canvas, world, player).y();
-  const auto [lo, hi] = screenBox(c, box);
+  const auto [lo, hi] = screenRect(c, box);
   EXPECT_GE(lo.x(), 0.0f) << what;
   EXPECT_LE(hi.x(), static_cast<float>(c.viewport.x())) << what;
   EXPECT_GE(lo.y(), hud_bottom) << what << ": under the HUD panel";
