@@ -2,7 +2,6 @@
 /// Screen-space overlays: the HUD (health bar, speed, crashes; hits, frame, FPS for developers),
 /// the PAUSED banner, the game-over panel and the F1 help panel.
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
