@@ -121,7 +121,8 @@ void registerSize(std::size_t n) {
       return static_cast<double>(m.count) + m.normal.x();
     });
   });
-  // Every pair's manifold written to memory (struct of arrays), four pairs per AVX2 instruction.
+  // Every pair's manifold written to memory (struct of arrays), on the widest batch path: four
+  // pairs per AVX2 instruction, eight per AVX-512 one.
   benchmark::RegisterBenchmark(name("manifoldObb2Batch", "cardemo").c_str(),
                                [n](benchmark::State& s) {
                                  BatchPairs& p = batchPairs(n);

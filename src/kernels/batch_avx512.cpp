@@ -1,8 +1,8 @@
 // The batch kernels with AVX-512F: the 2D boolean SAT through the float pre-filter, sixteen pairs
 // per instruction, and every double kernel eight pairs per instruction (the 2D SAT with separation
-// and normal, the 2D boolean SAT for the boxes the filter leaves undecided, and both 3D
-// kernels with their A-frame filter). Built with -mavx512f (CMakeLists.txt) and called only after
-// batchPathAvailable says the CPU has it.
+// and normal, the 2D boolean SAT for the boxes the filter leaves undecided, the 2D contact
+// manifold, and both 3D kernels with their A-frame filter). Built with -mavx512f (CMakeLists.txt)
+// and called only after batchPathAvailable says the CPU has it.
 //
 // Includes nothing but the intrinsics and the kernel headers, for the reason given in
 // batch_avx2.cpp.
@@ -16,6 +16,7 @@
 
 #include "kernels/batch2_filter.hpp"
 #include "kernels/batch_kernels.hpp"
+#include "kernels/manifold2_lanes.hpp"
 
 namespace cardemo::batch_detail {
 namespace {
@@ -131,6 +132,31 @@ struct Double8 {
   const std::uint64_t bytes = hitBytes(separated.m);
   __builtin_memcpy(p, &bytes, 8);
 }
+// The manifold kernel's mask and sign-bit operations (manifold2_lanes.hpp): mask-register logic
+// and zero-masked moves. AVX-512F has no xor on doubles (that is AVX-512DQ), so sign bits are
+// flipped with the 64-bit integer xor, which does the same to the bits.
+[[gnu::always_inline]] inline Mask8 operator^(Mask8 a, Mask8 b) {
+  return {static_cast<__mmask8>(a.m ^ b.m)};
+}
+[[gnu::always_inline]] inline Mask8 andNot(Mask8 a, Mask8 b) {
+  return {static_cast<__mmask8>(~a.m & b.m)};
+}
+[[gnu::always_inline]] inline Double8 onlyWhere(Mask8 m, Double8 x) {
+  return {_mm512_maskz_mov_pd(m.m, x.v)};
+}
+[[gnu::always_inline]] inline Double8 onlyWhereNot(Mask8 m, Double8 x) {
+  return {_mm512_maskz_mov_pd(static_cast<__mmask8>(~m.m), x.v)};
+}
+[[gnu::always_inline]] inline Double8 flipSign(Double8 x, Double8 sign_bits) {
+  return {_mm512_castsi512_pd(
+      _mm512_xor_si512(_mm512_castpd_si512(x.v), _mm512_castpd_si512(sign_bits.v)))};
+}
+// The lanes hold small whole numbers: converted exactly, eight 32-bit integers stored at once
+// (zero-masked with every lane on, for the GCC bug named at max above).
+[[gnu::always_inline]] inline void storeInt32(std::int32_t* p, Double8 a) {
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(p),
+                      _mm512_maskz_cvtpd_epi32(static_cast<__mmask8>(0xFF), a.v));
+}
 
 }  // namespace
 
@@ -165,6 +191,11 @@ void overlap2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, st
 void collide2Avx512(const Box2One& a, const Box2Arrays& b, std::size_t first, std::size_t last,
                     const Sat2Out& out) {
   runCollide2<Double8>(a, b, first, last, out);
+}
+
+void manifold2Avx512(const Box2Arrays& a, const Box2Arrays& b, const ManifoldParams& settings,
+                     std::size_t first, std::size_t last, const Manifold2Out& out) {
+  runManifold2<Double8>(a, b, settings, first, last, out);
 }
 
 void overlap3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,

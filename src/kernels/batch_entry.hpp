@@ -138,6 +138,9 @@ void overlap3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, st
                     std::uint8_t* hit);
 void separation3Avx512(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
                        double* separation);
+// manifold2Avx2 eight pairs at a time: last - first is a multiple of eight.
+void manifold2Avx512(const Box2Arrays& a, const Box2Arrays& b, const ManifoldParams& settings,
+                     std::size_t first, std::size_t last, const Manifold2Out& out);
 // 3D with the float pre-filter (batch3_filter.hpp), eight pairs per instruction; the boxes it
 // leaves undecided go, copied four at a time into a lane group, to overlap3Avx2. Same verdicts as
 // overlap3*, bit for bit. Returns how many boxes the filter left undecided.

@@ -38,11 +38,19 @@ void manifoldObb2Batch(const Obb2Batch& a, const Obb2Batch& b, Manifold2Batch& o
   const batch_detail::Manifold2Out arrays = out.arrays();
   std::size_t done = 0;
 #if defined(CARDEMO_BATCH_AVX2)
+  const batch_detail::ManifoldParams params{
+      settings.max_separation, 1.0 - settings.relative_tolerance, settings.absolute_tolerance};
+#if defined(CARDEMO_BATCH_AVX512)
+  if (batchPath() == BatchPath::kAvx512) {
+    done = n / 8 * 8;
+    batch_detail::manifold2Avx512(a.arrays(), b.arrays(), params, 0, done, arrays);
+  }
+#endif
   if (batchPath() != BatchPath::kPortable) {
-    const batch_detail::ManifoldParams params{
-        settings.max_separation, 1.0 - settings.relative_tolerance, settings.absolute_tolerance};
+    // The groups of four left (all of them on AVX2, at most one after the AVX-512 groups).
+    const std::size_t start = done;
     done = n / 4 * 4;
-    batch_detail::manifold2Avx2(a.arrays(), b.arrays(), params, 0, done, arrays);
+    batch_detail::manifold2Avx2(a.arrays(), b.arrays(), params, start, done, arrays);
   }
 #endif
   for (std::size_t i = done; i < n; ++i) {

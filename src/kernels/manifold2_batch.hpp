@@ -1,6 +1,6 @@
 #pragma once
 /// Contact manifolds of many box pairs at once: struct-of-arrays input and output, four pairs per
-/// AVX2 instruction, the same bits as manifoldObb2.
+/// AVX2 instruction or eight per AVX-512 one, the same bits as manifoldObb2.
 
 #include <cstddef>
 #include <cstdint>
@@ -13,8 +13,8 @@
 
 namespace cardemo {
 
-/// The manifolds of a batch of pairs, one array per field, so that the kernel stores four pairs'
-/// values with one instruction. Entry i is pair i's manifold; manifold(i) assembles it.
+/// The manifolds of a batch of pairs, one array per field, so that the kernel stores a lane
+/// group's values with one instruction. Entry i is pair i's manifold; manifold(i) assembles it.
 class Manifold2Batch {
  public:
   /// Room for `n` manifolds (contents unspecified until a query writes them).
@@ -35,8 +35,8 @@ class Manifold2Batch {
 
 /// out.manifold(i) = manifoldObb2(a.box(i), b.box(i), settings) for every i, with no previous
 /// reference face (a first contact), bit for bit on every batch path. `a` and `b` must have the
-/// same size; `out` is resized to it. The AVX2 path runs four pairs per instruction without a
-/// branch on any pair's geometry; the portable path calls manifoldObb2.
+/// same size; `out` is resized to it. The AVX2 and AVX-512 paths run four and eight pairs per
+/// instruction without a branch on any pair's geometry; the portable path calls manifoldObb2.
 void manifoldObb2Batch(const Obb2Batch& a, const Obb2Batch& b, Manifold2Batch& out,
                        const ManifoldSettings& settings = {});
 

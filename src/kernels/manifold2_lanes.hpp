@@ -2,12 +2,12 @@
 /// Internal to the batch kernels: manifoldObb2 (manifold2.cpp) over a lane type, several pairs at
 /// a time and without a branch, giving the scalar function's results bit for bit.
 //
-// Included after batch_kernels.hpp by batch_avx2.cpp only (the portable path calls the scalar
-// function). Every arithmetic operation of manifoldObb2 appears here in the same order on the
-// same operands, so every value has the same bits. Each choice the scalar code makes by branching
-// (early out, reference face, flip, incident face, corners, clipping, which points are kept) is
-// made per lane with masks, and both sides are computed. Lanes that the scalar code would have
-// left early compute values that are then replaced (a clip's division may be 0/0 there).
+// Included after batch_kernels.hpp by batch_avx2.cpp and batch_avx512.cpp only (the portable path
+// calls the scalar function). Every arithmetic operation of manifoldObb2 appears here in the same
+// order on the same operands, so every value has the same bits. Each choice the scalar code makes
+// by branching (early out, reference face, flip, incident face, corners, clipping, which points are
+// kept) is made per lane with masks, and both sides are computed. Lanes that the scalar code would
+// have left early compute values that are then replaced (a clip's division may be 0/0 there).
 //
 // Choices are carried as masks combined with bitwise logic rather than blends, and a
 // multiplication by a sign of +-1 (exact: it only sets the sign bit) is a masked sign flip: a
