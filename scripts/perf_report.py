@@ -231,7 +231,7 @@ def batch_tables(r, csv_rows):
             "side), as resting "
             "and grazing contacts do in the game; `sent on` is the share of pairs the boolean "
             "kernels' float pre-filters left to their double kernels, whose time is included (the "
-            "3D one runs on AVX2 on the AVX-512 path too). "
+            "AVX-512 path runs both with sixteen float lanes). "
             "`scalar` is the one-pair function in a loop over the same boxes; Box2D is "
             "b2TestOverlap (boolean) or b2CollidePolygons (SAT) one pair at a time on the same "
             "pairs. Like for like: `scalar ratio` = Box2D / cardemo's scalar loop; `batch ratio` = "

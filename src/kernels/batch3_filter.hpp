@@ -1,11 +1,11 @@
 #pragma once
 /// Internal to the batch kernels: the float pre-filter of the 3D boolean SAT, written once over a
-/// float lane type (eight floats with AVX2) as the 2D one is (batch2_filter.hpp, whose lane type
-/// interface it uses). It decides, in float, every pair whose largest separating-axis gap clears a
-/// rigorous error bound, and hands the rest to the double kernel, so every verdict equals that of
-/// the accurate kernel, bit for bit the portable path's.
+/// float lane type (eight floats with AVX2, sixteen with AVX-512) as the 2D one is
+/// (batch2_filter.hpp, whose lane type interface it uses). It decides, in float, every pair whose
+/// largest separating-axis gap clears a rigorous error bound, and hands the rest to the double
+/// kernel, so every verdict equals that of the accurate kernel, bit for bit the portable path's.
 //
-// Included by filter_avx2.cpp only; everything here has internal linkage.
+// Included by filter_avx2.cpp and batch_avx512.cpp only; everything here has internal linkage.
 //
 // The gaps are those of the double kernels' A-frame filter (batch_kernels.hpp, fastEdge): with
 // t = A^T d and R = A^T B, A's face i, B's face j and the edge axis a_i x b_j written in A's frame.

@@ -15,6 +15,7 @@
 #include <immintrin.h>
 
 #include "kernels/batch2_filter.hpp"
+#include "kernels/batch3_filter.hpp"
 #include "kernels/batch_kernels.hpp"
 #include "kernels/manifold2_lanes.hpp"
 
@@ -180,6 +181,23 @@ std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const 
           __builtin_prefetch(source[f] + i);
           __builtin_prefetch(source[f] + i + 8);
         }
+      });
+}
+
+std::size_t overlap3FilteredAvx512(const Box3One& a, const Box3Arrays& b, const Box3FilterOne& fa,
+                                   const Box3FilterArrays& fb, std::size_t first, std::size_t last,
+                                   std::uint8_t* hit) {
+  return runFilteredOverlap3<Float16>(
+      fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
+        const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
+                                    b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
+        decideOpenBoxes<8>(
+            source, boxes, count, hit, [&](const double(&f)[15][8], std::uint8_t* group_hit) {
+              const Box3Arrays group{
+                  f[0],  f[1],  f[2], {f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]},
+                  f[12], f[13], f[14]};
+              runOverlap3<Double8>(a, group, 0, 8, group_hit);
+            });
       });
 }
 

@@ -149,6 +149,11 @@ std::size_t overlap3FilteredAvx2(const Box3One& a, const Box3Arrays& b, const Bo
                                  std::uint8_t* hit);
 void overlap3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
                   std::uint8_t* hit);
+// The same with sixteen floats per instruction, the undecided boxes copied eight at a time into a
+// lane group for overlap3Avx512 (batch_avx512.cpp).
+std::size_t overlap3FilteredAvx512(const Box3One& a, const Box3Arrays& b, const Box3FilterOne& fa,
+                                   const Box3FilterArrays& fb, std::size_t first, std::size_t last,
+                                   std::uint8_t* hit);
 void separation3Avx2(const Box3One& a, const Box3Arrays& b, std::size_t first, std::size_t last,
                      double* separation);
 

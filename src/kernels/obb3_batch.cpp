@@ -185,10 +185,16 @@ std::size_t overlapObb3Batch(const Obb3& a, const Obb3Batch& many, std::span<std
 #if defined(CARDEMO_BATCH_AVX2)
   const BatchPath path = batchPath();
   if (path != BatchPath::kPortable) {
-    // The float pre-filter runs on AVX2 on the AVX-512 path too (eight floats a step; the boxes
-    // it leaves undecided go to the AVX2 double kernel).
+    // The float pre-filter: sixteen floats a step on AVX-512, eight on AVX2; the boxes it leaves
+    // undecided go to the double kernel of the same path.
     batch_detail::Box3FilterOne fa{};
     if (unpackFilter(a, many, one, fa)) {
+#if defined(CARDEMO_BATCH_AVX512)
+      if (path == BatchPath::kAvx512) {
+        return batch_detail::overlap3FilteredAvx512(one, many.arrays(), fa, many.filterArrays(), 0,
+                                                    n, hit.data());
+      }
+#endif
       return batch_detail::overlap3FilteredAvx2(one, many.arrays(), fa, many.filterArrays(), 0, n,
                                                 hit.data());
     }
