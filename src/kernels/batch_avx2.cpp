@@ -109,6 +109,9 @@ struct Lane4 {
 [[gnu::always_inline]] inline bool allOf(Mask4 m) {
   return _mm256_movemask_pd(m.m) == 0xF;
 }
+[[gnu::always_inline]] inline unsigned laneBits(Mask4 m) {
+  return static_cast<unsigned>(_mm256_movemask_pd(m.m));
+}
 
 }  // namespace
 

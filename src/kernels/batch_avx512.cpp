@@ -118,6 +118,9 @@ struct Double8 {
 [[gnu::always_inline]] inline bool allOf(Mask8 m) {
   return m.m == 0xFF;
 }
+[[gnu::always_inline]] inline unsigned laneBits(Mask8 m) {
+  return m.m;
+}
 [[gnu::always_inline]] inline Double8 select(Mask8 m, Double8 a, Double8 b) {
   return {_mm512_mask_blend_pd(m.m, b.v, a.v)};
 }

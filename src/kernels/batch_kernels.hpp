@@ -6,7 +6,8 @@
 /// A lane type L provides: L::kWidth, L::Mask, L::load(const double*), L::splat(double),
 /// + - * / and unary -, abs, sqrt, fma (correctly rounded a*b+c), gt, lt, mask | and &,
 /// select(mask, if_true, if_false), store(double*, L), storeHits(uint8_t*, separated mask) and
-/// allOf(mask) (true when every lane is set; the 3D filter branches on it).
+/// allOf(mask) (true when every lane is set; the 3D filter branches on it); a type wider than one
+/// lane also laneBits(mask) (bit l set where lane l is).
 //
 // Included by exactly three translation units, batch_portable.cpp, batch_avx2.cpp (compiled with
 // -mavx2 -mfma) and batch_avx512.cpp (-mavx512f). Everything here has internal linkage, so the
@@ -20,6 +21,7 @@
 #include <utility>
 
 #include "kernels/batch_entry.hpp"
+#include "kernels/filter_run.hpp"
 
 // Every kernel is inlined into its driver loop, so the query box's broadcast values are loaded
 // once per call rather than once per lane group (GCC and Clang both honour the attribute).
@@ -388,8 +390,17 @@ CARDEMO_BATCH_INLINE Candidate<L> larger(const Candidate<L>& x, const Candidate<
           select(wins, x.square, y.square)};
 }
 
+// The A-frame separations of lane group i, and the lanes where they are the accurate kernel's to
+// within kSeparationTolerance times the scale with its sign; the other lanes need that kernel.
 template <class L>
-CARDEMO_BATCH_INLINE L separation3Filtered(const Box3One& a, const Box3Arrays& b, std::size_t i) {
+struct FilteredSeparation {
+  L value;
+  typename L::Mask decided;
+};
+
+template <class L>
+CARDEMO_BATCH_INLINE FilteredSeparation<L> separation3Fast(const Box3One& a, const Box3Arrays& b,
+                                                           std::size_t i) {
   const Pair3Lanes<L> p = pair3<L>(a, b, i);
   // The largest of the face gaps and of gap / sqrt(length2) over the edges that are well enough
   // conditioned (length2 above the floor, where the normalised error is within
@@ -424,11 +435,16 @@ CARDEMO_BATCH_INLINE L separation3Filtered(const Box3One& a, const Box3Arrays& b
   const L value = winner.gap / sqrt(winner.length2);
   // Near zero the sign (the verdict) must be the accurate kernel's: leave those lanes to it.
   const typename L::Mask clear = gt(abs(value), L::splat(2.0 * kSeparationTolerance) * scale3(p));
-  if (allOf(all_sure & clear)) return value;
+  if (allOf(all_sure & clear)) return {value, all_sure & clear};
   all_sure = certifySkipped(p, sure, lt(one, L::splat(0.0)));
-  const typename L::Mask decided = all_sure & clear;
-  if (allOf(decided)) return value;
-  return select(decided, value, separation3<L>(a, b, i));
+  return {value, all_sure & clear};
+}
+
+template <class L>
+CARDEMO_BATCH_INLINE L separation3Filtered(const Box3One& a, const Box3Arrays& b, std::size_t i) {
+  const FilteredSeparation<L> f = separation3Fast<L>(a, b, i);
+  if (allOf(f.decided)) return f.value;
+  return select(f.decided, f.value, separation3<L>(a, b, i));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -525,12 +541,45 @@ template <class L>
   for (std::size_t k = 0; i + k < last; ++k) hit[i + k] = h[k];
 }
 
+// On more than one lane, the boxes the filter leaves undecided go on one by one, as in the boolean
+// pre-filters (filter_run.hpp): when a tenth of the boxes are near touching, most lane groups hold
+// one, and the accurate kernel on each such whole group cost more than the copies.
 template <class L>
 [[gnu::flatten]] void runSeparation3(const Box3One& a, const Box3Arrays& b, std::size_t first,
                                      std::size_t last, double* separation) {
   std::size_t i = first;
-  for (; i + L::kWidth <= last; i += L::kWidth) {
-    store(separation + i, separation3Filtered<L>(a, b, i));
+  if constexpr (L::kWidth == 1) {
+    for (; i < last; ++i) store(separation + i, separation3Filtered<L>(a, b, i));
+    return;
+  } else {
+    constexpr std::size_t kPending = 64;
+    std::size_t pending[kPending + L::kWidth];
+    std::size_t count = 0;
+    const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
+                                b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
+    const auto decide_pending = [&] {
+      decideOpenBoxes<L::kWidth>(
+          source, pending, count, separation,
+          [&a](const double(&f)[15][L::kWidth], double* group_out) {
+            const Box3Arrays group{
+                f[0],  f[1],  f[2], {f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]},
+                f[12], f[13], f[14]};
+            store(group_out, separation3<L>(a, group, 0));
+          });
+      count = 0;
+    };
+    for (; i + L::kWidth <= last; i += L::kWidth) {
+      const FilteredSeparation<L> f = separation3Fast<L>(a, b, i);
+      store(separation + i, f.value);
+      if (allOf(f.decided)) [[likely]]
+        continue;
+      for (unsigned open = ~laneBits(f.decided) & ((1u << L::kWidth) - 1u); open != 0;
+           open &= open - 1) {
+        pending[count++] = i + static_cast<std::size_t>(__builtin_ctz(open));
+      }
+      if (count >= kPending) decide_pending();
+    }
+    if (count > 0) decide_pending();
   }
   if (i == last) return;
   PaddedTail<L, Box3Arrays, 15> t;

@@ -5,7 +5,7 @@
 /// eight lanes, the undecided boxes alone for the 2D kernel on sixteen lanes (where most groups
 /// hold an open lane) and for the costly 3D one.
 //
-// Included by the filter headers only; everything here has internal linkage.
+// Included by the filter headers and batch_kernels.hpp only; everything here has internal linkage.
 
 #include <cstddef>
 #include <cstdint>
@@ -109,12 +109,13 @@ std::size_t runFilteredByBox(std::size_t first, std::size_t last, std::uint8_t* 
 }
 
 // Decides the open boxes boxes[0, count) kLanes at a time: copies field f of each from source[f]
-// into one lane group (the last box repeated to fill it), calls `decide(fields, group_hit)` (the
-// double kernel on that group, group_hit[l] = 1 when lane l overlaps) and writes the verdicts of
-// the live lanes to hit. The exact_boxes of runFilteredByBox, less the kernel.
-template <std::size_t kLanes, std::size_t kFields, class Decide>
+// into one lane group (the last box repeated to fill it), calls `decide(fields, group_out)` (the
+// double kernel on that group, writing lane l's result to group_out[l]: a hit byte, or a
+// separation) and writes the results of the live lanes to out[box]. The exact_boxes of
+// runFilteredByBox, less the kernel; the 3D separation kernel's filter uses it too.
+template <std::size_t kLanes, std::size_t kFields, class T, class Decide>
 void decideOpenBoxes(const double* const (&source)[kFields], const std::size_t* boxes,
-                     std::size_t count, std::uint8_t* hit, const Decide& decide) {
+                     std::size_t count, T* out, const Decide& decide) {
   alignas(64) double fields[kFields][kLanes];
   for (std::size_t k = 0; k < count; k += kLanes) {
     const std::size_t lanes = count - k < kLanes ? count - k : kLanes;
@@ -123,9 +124,9 @@ void decideOpenBoxes(const double* const (&source)[kFields], const std::size_t* 
         fields[f][l] = source[f][boxes[k + (l < lanes ? l : lanes - 1)]];
       }
     }
-    std::uint8_t group_hit[kLanes];
-    decide(fields, group_hit);
-    for (std::size_t l = 0; l < lanes; ++l) hit[boxes[k + l]] = group_hit[l];
+    alignas(64) T group_out[kLanes];
+    decide(fields, group_out);
+    for (std::size_t l = 0; l < lanes; ++l) out[boxes[k + l]] = group_out[l];
   }
 }
 

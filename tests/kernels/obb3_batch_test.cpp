@@ -263,15 +263,24 @@ std::size_t expectDoubleKernelVerdicts(const Obb3& a, const std::vector<Obb3>& b
       EXPECT_EQ(reference[i], overlapObb3(a, boxes[i]) ? 1 : 0) << what << " box " << i;
     }
   }
+  // The separation kernel's own A-frame filter leaves the boxes nearest touching to its accurate
+  // kernel, one by one on the wide paths: the separations must still be the portable path's bits.
+  std::vector<double> reference_sep(boxes.size());
+  separationObb3Batch(a, many, reference_sep);
   std::size_t sent_on = 0;
   for (const BatchPath path : testing::availableBatchPaths()) {
     if (path == BatchPath::kPortable) continue;
     setBatchPath(path);
     std::vector<std::uint8_t> hit(boxes.size(), 7);
     sent_on += overlapObb3Batch(a, many, hit);
+    std::vector<double> sep(boxes.size());
+    separationObb3Batch(a, many, sep);
     pairs += boxes.size();
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       EXPECT_EQ(hit[i], reference[i]) << what << " " << batchPathName(path) << " box " << i;
+      EXPECT_TRUE(sameBits(sep[i], reference_sep[i]))
+          << what << " " << batchPathName(path) << " box " << i << ": " << sep[i] << " against "
+          << reference_sep[i];
     }
   }
   return sent_on;
@@ -308,8 +317,8 @@ TEST(Obb3Batch, NearTouchingPairsAtTheFilterMarginMatchTheDoubleKernel) {
   for (int k = 0; k < test3::scaledCount(600); ++k) {
     const Obb3 a = rng() % 2 == 0 ? test3::randomBoxAt(rng, {0, 0, 0}) : test3::randomBox(rng);
     std::vector<Obb3> boxes;
-    // Now and then a batch long enough that the open boxes fill the filter's buffer
-    // (runFilteredByBox) before its end.
+    // Now and then a batch long enough that the open boxes fill the filters' buffers
+    // (runFilteredByBox, runSeparation3) before its end.
     const int n =
         rng() % 10 == 0 ? 100 + static_cast<int>(rng() % 300) : 1 + static_cast<int>(rng() % 40);
     for (int i = 0; i < n; ++i) {
@@ -332,6 +341,39 @@ TEST(Obb3Batch, NearTouchingPairsAtTheFilterMarginMatchTheDoubleKernel) {
     // Gaps below the margin must reach the double kernel, and wider ones must not all do so.
     EXPECT_GT(sent_on, pairs / 10) << sent_on << " of " << pairs;
     EXPECT_LT(sent_on, pairs * 9 / 10) << sent_on << " of " << pairs;
+  }
+}
+
+// A batch in which every box lies a hair (1e-13 to 1e-11 m) beyond one of A's faces: the separation
+// kernel's filter leaves each to its accurate kernel, so the buffer of open boxes fills and is
+// emptied many times before the end of the batch. Every path gives the portable path's bits.
+TEST(Obb3Batch, SeparationsOfAllOpenBoxesFillTheBufferAndMatchThePortablePath) {
+  testing::BatchPathGuard guard;
+  std::mt19937_64 rng(0x3f17e8);
+  const Obb3 a = test3::randomBoxAt(rng, {1e6, -2e5, 3e4});
+  std::vector<Obb3> boxes;
+  for (int i = 0; i < 1000; ++i) {
+    Obb3 b = test3::randomBoxAt(rng, {0, 0, 0});
+    const Eigen::Vector3d u =
+        test3::randomSign(rng) * a.rotation().col(static_cast<int>(rng() % 3));
+    test3::placeAtGap(a, b, u, test3::logUniform(rng, 1e-13, 1e-11));
+    boxes.push_back(b);
+  }
+  const Obb3Batch many(boxes);
+  setBatchPath(BatchPath::kPortable);
+  std::vector<double> reference(boxes.size());
+  separationObb3Batch(a, many, reference);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    ASSERT_NEAR(reference[i], exact::collideObb3(a, boxes[i]).separation, kSepTolerance) << i;
+  }
+  for (const BatchPath path : testing::availableBatchPaths()) {
+    setBatchPath(path);
+    std::vector<double> sep(boxes.size(), 7.0);
+    separationObb3Batch(a, many, sep);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      EXPECT_TRUE(sameBits(sep[i], reference[i]))
+          << batchPathName(path) << " box " << i << ": " << sep[i] << " against " << reference[i];
+    }
   }
 }
 
