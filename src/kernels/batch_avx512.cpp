@@ -17,6 +17,7 @@
 #include "kernels/batch2_filter.hpp"
 #include "kernels/batch3_filter.hpp"
 #include "kernels/batch_kernels.hpp"
+#include "kernels/box_fields.hpp"
 #include "kernels/manifold2_lanes.hpp"
 
 namespace cardemo::batch_detail {
@@ -167,22 +168,21 @@ struct Double8 {
 std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                    const Box2FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit) {
-  const double* source[6] = {b.cx, b.cy, b.ux, b.uy, b.hx, b.hy};
+  const Box2Fields source = fieldsOf(b);
   return runFilteredOverlap2ByBox<Float16>(
       fa, fb, first, last, hit,
       [&](const std::size_t* boxes, std::size_t count) {
-        decideOpenBoxes<8>(source, boxes, count, hit,
+        decideOpenBoxes<8>(source.field, boxes, count, hit,
                            [&](const double(&f)[6][8], std::uint8_t* group_hit) {
-                             const Box2Arrays group{f[0], f[1], f[2], f[3], f[4], f[5]};
-                             storeHits(group_hit, separated2<Double8>(a, group, 0));
+                             storeHits(group_hit, separated2<Double8>(a, arraysOf(f), 0));
                            });
       },
       [&](std::size_t i) {
         // The group's double fields, read when the buffer of open boxes is next decided:
         // without this, those sparse reads miss the caches once the batch is larger than they are.
         for (std::size_t f = 0; f < 6; ++f) {
-          __builtin_prefetch(source[f] + i);
-          __builtin_prefetch(source[f] + i + 8);
+          __builtin_prefetch(source.field[f] + i);
+          __builtin_prefetch(source.field[f] + i + 8);
         }
       });
 }
@@ -192,15 +192,10 @@ std::size_t overlap3FilteredAvx512(const Box3One& a, const Box3Arrays& b, const 
                                    std::uint8_t* hit) {
   return runFilteredOverlap3<Float16>(
       fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
-        const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
-                                    b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
-        decideOpenBoxes<8>(
-            source, boxes, count, hit, [&](const double(&f)[15][8], std::uint8_t* group_hit) {
-              const Box3Arrays group{
-                  f[0],  f[1],  f[2], {f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]},
-                  f[12], f[13], f[14]};
-              runOverlap3<Double8>(a, group, 0, 8, group_hit);
-            });
+        decideOpenBoxes<8>(fieldsOf(b).field, boxes, count, hit,
+                           [&](const double(&f)[15][8], std::uint8_t* group_hit) {
+                             runOverlap3<Double8>(a, arraysOf(f), 0, 8, group_hit);
+                           });
       });
 }
 

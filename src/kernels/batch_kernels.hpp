@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "kernels/batch_entry.hpp"
+#include "kernels/box_fields.hpp"
 #include "kernels/filter_run.hpp"
 
 // Every kernel is inlined into its driver loop, so the query box's broadcast values are loaded
@@ -456,35 +457,15 @@ struct PaddedTail {
   Arrays arrays;
 };
 
-template <class L>
-void fillTail(const Box2Arrays& b, std::size_t i, std::size_t last,
-              PaddedTail<L, Box2Arrays, 6>& t) {
-  const double* src[6] = {b.cx, b.cy, b.ux, b.uy, b.hx, b.hy};
-  for (std::size_t f = 0; f < 6; ++f) {
+template <class L, class Arrays, std::size_t kFields>
+void fillTail(const Arrays& b, std::size_t i, std::size_t last, PaddedTail<L, Arrays, kFields>& t) {
+  const auto source = fieldsOf(b);
+  for (std::size_t f = 0; f < kFields; ++f) {
     for (std::size_t k = 0; k < L::kWidth; ++k) {
-      t.values[f][k] = src[f][i + k < last ? i + k : last - 1];
+      t.values[f][k] = source.field[f][i + k < last ? i + k : last - 1];
     }
   }
-  t.arrays = {t.values[0], t.values[1], t.values[2], t.values[3], t.values[4], t.values[5]};
-}
-
-template <class L>
-void fillTail(const Box3Arrays& b, std::size_t i, std::size_t last,
-              PaddedTail<L, Box3Arrays, 15>& t) {
-  const double* src[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
-                           b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
-  for (std::size_t f = 0; f < 15; ++f) {
-    for (std::size_t k = 0; k < L::kWidth; ++k) {
-      t.values[f][k] = src[f][i + k < last ? i + k : last - 1];
-    }
-  }
-  t.arrays.cx = t.values[0];
-  t.arrays.cy = t.values[1];
-  t.arrays.cz = t.values[2];
-  for (std::size_t m = 0; m < 9; ++m) t.arrays.r[m] = t.values[3 + m];
-  t.arrays.hx = t.values[12];
-  t.arrays.hy = t.values[13];
-  t.arrays.hz = t.values[14];
+  t.arrays = arraysOf(t.values);
 }
 
 template <class L>
@@ -555,17 +536,12 @@ template <class L>
     constexpr std::size_t kPending = 64;
     std::size_t pending[kPending + L::kWidth];
     std::size_t count = 0;
-    const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
-                                b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
+    const Box3Fields source = fieldsOf(b);
     const auto decide_pending = [&] {
-      decideOpenBoxes<L::kWidth>(
-          source, pending, count, separation,
-          [&a](const double(&f)[15][L::kWidth], double* group_out) {
-            const Box3Arrays group{
-                f[0],  f[1],  f[2], {f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]},
-                f[12], f[13], f[14]};
-            store(group_out, separation3<L>(a, group, 0));
-          });
+      decideOpenBoxes<L::kWidth>(source.field, pending, count, separation,
+                                 [&a](const double(&f)[15][L::kWidth], double* group_out) {
+                                   store(group_out, separation3<L>(a, arraysOf(f), 0));
+                                 });
       count = 0;
     };
     for (; i + L::kWidth <= last; i += L::kWidth) {

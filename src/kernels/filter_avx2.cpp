@@ -15,6 +15,7 @@
 
 #include "kernels/batch2_filter.hpp"
 #include "kernels/batch3_filter.hpp"
+#include "kernels/box_fields.hpp"
 
 namespace cardemo::batch_detail {
 namespace {
@@ -69,15 +70,10 @@ std::size_t overlap3FilteredAvx2(const Box3One& a, const Box3Arrays& b, const Bo
                                  std::uint8_t* hit) {
   return runFilteredOverlap3<Float8>(
       fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
-        const double* source[15] = {b.cx,   b.cy,   b.cz,   b.r[0], b.r[1], b.r[2], b.r[3], b.r[4],
-                                    b.r[5], b.r[6], b.r[7], b.r[8], b.hx,   b.hy,   b.hz};
-        decideOpenBoxes<4>(
-            source, boxes, count, hit, [&](const double(&f)[15][4], std::uint8_t* group_hit) {
-              const Box3Arrays group{
-                  f[0],  f[1],  f[2], {f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11]},
-                  f[12], f[13], f[14]};
-              overlap3Avx2(a, group, 0, 4, group_hit);
-            });
+        decideOpenBoxes<4>(fieldsOf(b).field, boxes, count, hit,
+                           [&](const double(&f)[15][4], std::uint8_t* group_hit) {
+                             overlap3Avx2(a, arraysOf(f), 0, 4, group_hit);
+                           });
       });
 }
 
