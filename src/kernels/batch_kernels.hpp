@@ -522,9 +522,10 @@ template <class L>
   for (std::size_t k = 0; i + k < last; ++k) hit[i + k] = h[k];
 }
 
-// On more than one lane, the boxes the filter leaves undecided go on one by one, as in the boolean
-// pre-filters (filter_run.hpp): when a tenth of the boxes are near touching, most lane groups hold
-// one, and the accurate kernel on each such whole group cost more than the copies.
+// On more than one lane, the boxes the filter leaves undecided (separations within about 2^-39 of
+// the pair's scale of zero: resting contacts) go on one by one, as in the boolean pre-filters
+// (filter_run.hpp), so the accurate kernel runs on them alone rather than on each of their lane
+// groups (timings: docs/perf/history.md, "3D batch kernels").
 template <class L>
 [[gnu::flatten]] void runSeparation3(const Box3One& a, const Box3Arrays& b, std::size_t first,
                                      std::size_t last, double* separation) {
