@@ -84,18 +84,5 @@ std::size_t runFilteredOverlap2(const Box2FilterOne& fa, const Box2FilterArrays&
       first, last, hit, [q, b](std::size_t i) { return filter2<F>(q, b, i); }, exact);
 }
 
-// As runFilteredOverlap2, but the undecided boxes go on one by one (runFilteredByBox): with
-// sixteen lanes, a tenth of the boxes near touching leaves most lane groups with an open lane.
-template <class F, class ExactBoxes, class OnOpen>
-std::size_t runFilteredOverlap2ByBox(const Box2FilterOne& fa, const Box2FilterArrays& fb,
-                                     std::size_t first, std::size_t last, std::uint8_t* hit,
-                                     const ExactBoxes& exact_boxes, const OnOpen& on_open) {
-  const FilterQuery2<F> q = splatQuery<F>(fa);
-  const Box2FilterArrays b = fb;
-  return runFilteredByBox<F::kWidth>(
-      first, last, hit, [q, b](std::size_t i) { return filter2<F>(q, b, i); }, exact_boxes,
-      on_open);
-}
-
 }  // namespace
 }  // namespace cardemo::batch_detail

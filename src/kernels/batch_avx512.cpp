@@ -18,6 +18,7 @@
 #include "kernels/batch3_filter.hpp"
 #include "kernels/batch_kernels.hpp"
 #include "kernels/box_fields.hpp"
+#include "kernels/filter_run_avx512.hpp"
 #include "kernels/manifold2_lanes.hpp"
 
 namespace cardemo::batch_detail {
@@ -165,21 +166,30 @@ struct Double8 {
 
 }  // namespace
 
+// The 2D boolean kernel prefetches the double fields of the boxes its filter leaves open when
+// they take more bytes than this. Measured on the benchmark's boxes (docs/perf/history.md, "2D
+// batch kernels"): at 64k boxes (3 MiB) the prefetches cost more than they saved, at 1M (48 MiB)
+// they saved about 30 % of the time.
+constexpr std::size_t kPrefetchAbove = std::size_t{16} << 20;
+
 std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                    const Box2FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit) {
+  const FilterQuery2<Float16> q = splatQuery<Float16>(fa);
+  const Box2FilterArrays filter_arrays = fb;
   const Box2Fields source = fieldsOf(b);
-  return runFilteredOverlap2ByBox<Float16>(
-      fa, fb, first, last, hit,
-      [&](const std::size_t* boxes, std::size_t count) {
-        decideOpenBoxes<8>(source.field, boxes, count, hit,
-                           [&](const double(&f)[6][8], std::uint8_t* group_hit) {
-                             storeHits(group_hit, separated2<Double8>(a, arraysOf(f), 0));
-                           });
+  return runFilteredGathered(
+      first, last, hit,
+      [q, filter_arrays](std::size_t i) { return filter2<Float16>(q, filter_arrays, i); },
+      source.field,
+      [&a](const double(&f)[6][8], std::uint8_t* group_hit) {
+        storeHits(group_hit, separated2<Double8>(a, arraysOf(f), 0));
       },
-      [&](std::size_t i) {
-        // The group's double fields, read when the buffer of open boxes is next decided:
-        // without this, those sparse reads miss the caches once the batch is larger than they are.
+      [&source, prefetch = (last - first) * sizeof(double) * 6 > kPrefetchAbove](std::size_t i) {
+        // The group's double fields, which the gathers read when the buffer of open boxes is
+        // next decided: in a batch larger than the caches those sparse reads would miss. In a
+        // smaller one the prefetches cost more than they save.
+        if (!prefetch) return;
         for (std::size_t f = 0; f < 6; ++f) {
           __builtin_prefetch(source.field[f] + i);
           __builtin_prefetch(source.field[f] + i + 8);
@@ -190,6 +200,8 @@ std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const 
 std::size_t overlap3FilteredAvx512(const Box3One& a, const Box3Arrays& b, const Box3FilterOne& fa,
                                    const Box3FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit) {
+  // The open boxes are copied lane by lane, not gathered as in the 2D kernel above: with fifteen
+  // fields the gathers were slower at 1M boxes (docs/perf/history.md, "2D batch kernels").
   return runFilteredOverlap3<Float16>(
       fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
         decideOpenBoxes<8>(fieldsOf(b).field, boxes, count, hit,

@@ -126,6 +126,8 @@ void collide2Avx2(const Box2One& a, const Box2Arrays& b, std::size_t first, std:
 std::size_t overlap2FilteredAvx2(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                  const Box2FilterArrays& fb, std::size_t first, std::size_t last,
                                  std::uint8_t* hit);
+// The same with sixteen floats per instruction, the undecided boxes gathered eight at a time
+// into a lane group of the double kernel (batch_avx512.cpp, filter_run_avx512.hpp).
 std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                    const Box2FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit);

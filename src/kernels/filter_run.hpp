@@ -2,8 +2,8 @@
 /// Internal to the batch kernels: the loops that run the float pre-filters of the 2D and 3D boolean
 /// SATs (batch2_filter.hpp, batch3_filter.hpp). They write every verdict the filter decides and
 /// hand the undecided boxes to the double kernel: the whole lane group for the cheap 2D kernel on
-/// eight lanes, the undecided boxes alone for the 2D kernel on sixteen lanes (where most groups
-/// hold an open lane) and for the costly 3D one.
+/// eight lanes, the undecided boxes alone for the costly 3D one. (The 2D kernel on sixteen lanes,
+/// where most groups hold an open lane, gathers them: filter_run_avx512.hpp.)
 //
 // Included by the filter headers and batch_kernels.hpp only; everything here has internal linkage.
 
