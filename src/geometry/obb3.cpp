@@ -178,7 +178,7 @@ template <int N, class F>
   const V3 ha = gather3(a.half.x(), a.half.y(), a.half.z());
   p.t = ax * p.d.x() + ay * p.d.y() + az * p.d.z();
   staticFor<3>([&](auto jc) {
-    constexpr int j = decltype(jc)::value;
+    constexpr std::size_t j = decltype(jc)::value;
     p.col[j] = ax * rb[3 * j] + ay * rb[3 * j + 1] + az * rb[3 * j + 2];
     p.abscol[j] = abs3(p.col[j]);
     p.tb[j] = dot3(rb + 3 * j, p.d.data());
@@ -550,9 +550,9 @@ double frameDefect(const Eigen::Matrix3d& m) {
   double defect = 0.0;
   double norms = 0.0;  // sum of the squared column norms: NaN or infinite iff some entry is
   staticFor<3>([&](auto kc) {
-    constexpr int k = decltype(kc)::value, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-    staticFor<3 - k>([&](auto lc) {
-      constexpr int l = k + decltype(lc)::value;
+    constexpr std::size_t k = decltype(kc)::value, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    staticFor<3 - static_cast<int>(k)>([&](auto lc) {
+      constexpr std::size_t l = k + decltype(lc)::value;
       const double g = dot3(c + 3 * k, c + 3 * l);
       if constexpr (k == l) norms += g;
       defect = std::max(defect, std::abs(g - (k == l ? 1.0 : 0.0)));

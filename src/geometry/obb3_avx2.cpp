@@ -92,7 +92,7 @@ struct Lanes {
   p.t = dotColumns(ax, ay, az, vdx, vdy, vdz);
   // B's rows (lane j of bx is b_j's x) as blends of the splats of its entries.
   __m256d bx, by, bz;
-  for (int j = 0; j < 3; ++j) {
+  for (std::size_t j = 0; j < 3; ++j) {
     const __m256d sx = broadcast(rb + 3 * j), sy = broadcast(rb + 3 * j + 1),
                   sz = broadcast(rb + 3 * j + 2);
     p.col[j] = dotColumns(ax, ay, az, sx, sy, sz);

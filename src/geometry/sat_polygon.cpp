@@ -456,8 +456,8 @@ SatResult2 collidePolygons(PolygonView a, PolygonView b) {
   assert(inDomain(a) && inDomain(b));
   sat_detail::WidestAxis widest;
   if (a.count == 4 && b.count == 4 && widestAxisOfQuads(a, b, widest)) {
-    const SatResult2 r{widest.separation <= 0.0, widest.separation,
-                       Eigen::Vector2d(widest.normal_x, widest.normal_y)};
+    SatResult2 r{widest.separation <= 0.0, widest.separation,
+                 Eigen::Vector2d(widest.normal_x, widest.normal_y)};
     assert(isFinite(r));
     return r;
   }

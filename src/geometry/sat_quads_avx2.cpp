@@ -90,7 +90,7 @@ bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out) {
   alignas(32) double gap_of[8], toward_x[8], toward_y[8], length_of[8];
   __m256d keys[2];
   __m256d smallest_length2 = _mm256_set1_pd(__builtin_inf());
-  for (int r = 0; r < 2; ++r) {
+  for (std::size_t r = 0; r < 2; ++r) {
     const __m256d x = nx[r], y = ny[r];
     const __m256d hi = project(x, y, own_x[r][0], own_y[r][0]);
     const __m256d lo = _mm256_min_pd(project(x, y, own_x[r][1], own_y[r][1]),

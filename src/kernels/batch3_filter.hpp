@@ -75,7 +75,7 @@ template <class F>
   for (int p = 0; p < 3; ++p) {
     t[p] = fmadd(a.a[p][0], d[0], fmadd(a.a[p][1], d[1], a.a[p][2] * d[2]));
   }
-  for (int q = 0; q < 3; ++q) {
+  for (std::size_t q = 0; q < 3; ++q) {
     const F b0 = F::load(b.r[3 * q] + i), b1 = F::load(b.r[3 * q + 1] + i);
     const F b2 = F::load(b.r[3 * q + 2] + i);
     for (int p = 0; p < 3; ++p) {

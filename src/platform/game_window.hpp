@@ -34,7 +34,7 @@ struct GameOutcome {
 
 /// Plays one scene in an open window until Esc, N on a parked level with a next one, window close,
 /// SIGINT, SIGTERM or SIGHUP, then finishes the recording and writes the summary.
-[[nodiscard]] GameOutcome runGame(SdlWindow& window, const GameWindowOptions& options);
+[[nodiscard]] GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options);
 
 /// Opens the window and runs the game (runGame) in it. Returns the exit status: 0 normally, 1 when
 /// no display can be opened, 2 when an output cannot be written.

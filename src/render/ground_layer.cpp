@@ -43,11 +43,18 @@ bool groundArea(const Camera& camera, const Scene& scene, Aabb2& area) {
   return true;
 }
 
+// True when the cells [lo, hi] (whole numbers, both axes) are at least one and at most
+// kMaxCells: false for an empty, NaN or huge range, so the loops over them stay short.
+bool fewCells(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  const Eigen::Vector2d n = hi - lo + Eigen::Vector2d::Ones();
+  return n.x() >= 1.0 && n.y() >= 1.0 && n.x() * n.y() <= kMaxCells;
+}
+
 void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const Aabb2* lot,
                  const Palette& palette) {
   const Eigen::Vector2d lo = (area.min / kPatchCellM).array().floor();
   const Eigen::Vector2d hi = (area.max / kPatchCellM).array().floor();
-  if (!((hi.x() - lo.x() + 1.0) * (hi.y() - lo.y() + 1.0) <= kMaxCells)) return;
+  if (!fewCells(lo, hi)) return;
   if (camera.pixels_per_metre * kPatchCellM < 6.0) return;
   constexpr int kSides = 8;
   std::array<Eigen::Vector2f, kSides> pts;
@@ -91,12 +98,14 @@ void drawTiles(Canvas& canvas, const Camera& camera, const Scene& scene, const A
   const Eigen::Vector2d origin = scene.bounds ? scene.bounds->min : Eigen::Vector2d::Zero();
   const Eigen::Vector2d lo = ((area.min - origin) / tile).array().floor();
   const Eigen::Vector2d hi = ((area.max - origin) / tile).array().floor();
-  if (!((hi.x() - lo.x() + 1.0) * (hi.y() - lo.y() + 1.0) <= kMaxCells)) return;
+  if (!fewCells(lo, hi)) return;
   // One pixel of overlap hides the seams between tiles.
   const auto px = static_cast<float>(tile * camera.pixels_per_metre + 1.0);
-  for (double ty = lo.y(); ty <= hi.y(); ty += 1.0) {
-    for (double tx = lo.x(); tx <= hi.x(); tx += 1.0) {
-      const Eigen::Vector2d c = origin + Eigen::Vector2d{tx + 0.5, ty + 0.5} * tile;
+  const auto columns = static_cast<int>(hi.x() - lo.x()), rows = static_cast<int>(hi.y() - lo.y());
+  for (int row = 0; row <= rows; ++row) {
+    for (int column = 0; column <= columns; ++column) {
+      const Eigen::Vector2d c =
+          origin + Eigen::Vector2d{lo.x() + column + 0.5, lo.y() + row + 0.5} * tile;
       canvas.image(ImageId::kGround, camera.toScreen(c), 0.0f, {px, px}, {255, 255, 255, 255});
     }
   }
