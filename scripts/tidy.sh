@@ -1,13 +1,22 @@
 #!/usr/bin/env bash
 # Runs clang-tidy (the checks in .clang-tidy) over every source file of src/ that the build compiles,
 # in parallel, with that build's flags (compile_commands.json), and fails on any warning.
-#   scripts/tidy.sh [BUILD_DIR]     (default: build; configured here when it has no database yet)
+#   scripts/tidy.sh [BUILD_DIR]     (default: build-tidy; configured here when it has no database)
+# The build must not be a unity build: its database lists the unity sources, not the files of src/
+# (only the instruction-set files, compiled apart, would be checked). A directory configured here
+# has CARDEMO_UNITY_BUILD=OFF; nothing needs to be built in it.
 # CARDEMO_TIDY_JOBS sets the parallelism (default: nproc).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build="${1:-$root/build}"
+build="${1:-$root/build-tidy}"
 if [ ! -f "$build/compile_commands.json" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCARDEMO_UNITY_BUILD=OFF >/dev/null
+fi
+if grep -q '^CARDEMO_UNITY_BUILD:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "tidy.sh: $build is a unity build, whose database names the unity sources rather than" \
+    "the files of src/; configure one with -DCARDEMO_UNITY_BUILD=OFF (or run without an argument)" >&2
+  exit 2
 fi
 tidy=$(command -v clang-tidy-14 || command -v clang-tidy)
 jobs=${CARDEMO_TIDY_JOBS:-$(nproc)}
