@@ -1,12 +1,14 @@
 #pragma once
-/// Internal to batch_avx512.cpp: runFilteredByBox and decideOpenBoxes (filter_run.hpp) for the
-/// sixteen-lane filters, without a branch per open box. A lane group's open boxes join the buffer
+/// Internal to batch_avx512.cpp: runFilteredByBox and decideOpenBoxes (filter_run.hpp) for a
+/// sixteen-lane filter, without a branch per open box. A lane group's open boxes join the buffer
 /// with one compress and one store, and each field of eight open boxes is read with one gather.
+/// The 2D boolean kernel uses it; the 3D one keeps the copies, which were faster with its fifteen
+/// fields.
 //
-// Why: with a tenth of the boxes near touching, five lane groups in six hold an open box, and the
-// portable form's loop over the open lanes (one to four turns, at random) and its copies lane by
-// lane (eight scalar stores read back as one vector, which store forwarding cannot serve) cost
-// more than the filter itself (docs/perf/history.md, "2D batch kernels").
+// Why: with a tenth of the boxes near touching, five lane groups in six hold an open box, and
+// runFilteredByBox's loop over the open lanes (one to four turns, at random) and decideOpenBoxes's
+// copies lane by lane (eight scalar stores read back as one vector, which store forwarding cannot
+// serve) cost as much as the filter itself (docs/perf/history.md, "2D batch kernels").
 //
 // Included by batch_avx512.cpp only (built with -mavx512f); everything here has internal linkage.
 
