@@ -399,6 +399,23 @@ struct FilteredSeparation {
   typename L::Mask decided;
 };
 
+// separation3Fast's rare path (some lane has an edge pair too close to parallel for the A-frame
+// form): the sure lanes of every edge axis, and certifySkipped, on the pair formed again from
+// memory. Out of line, so that the common path keeps neither B's axes nor nine masks live to its
+// end (on AVX-512 they were many of its register spills).
+template <class L>
+[[gnu::noinline]] typename L::Mask certifyFromMemory(const Box3One& a, const Box3Arrays& b,
+                                                     std::size_t i) {
+  const Pair3Lanes<L> p = pair3<L>(a, b, i);
+  const L floor = L::splat(a.min_edge_length2);
+  typename L::Mask sure[9];
+  staticFor<9>([&](auto ec) {
+    constexpr int e = decltype(ec)::value;
+    sure[e] = gt(fastEdge(p, e / 3, e % 3).length2, floor);
+  });
+  return certifySkipped(p, sure, lt(L::splat(1.0), L::splat(0.0)));
+}
+
 template <class L>
 CARDEMO_BATCH_INLINE FilteredSeparation<L> separation3Fast(const Box3One& a, const Box3Arrays& b,
                                                            std::size_t i) {
@@ -407,7 +424,9 @@ CARDEMO_BATCH_INLINE FilteredSeparation<L> separation3Fast(const Box3One& a, con
   // conditioned (length2 above the floor, where the normalised error is within
   // kSeparationTolerance times the scale); the others enter as -infinity and never win. Reduced
   // as a tournament, so the dependency chain is four comparisons deep rather than fifteen; one
-  // root and one division at the end.
+  // root and one division at the end. Candidate c0 is the faces, c1-c9 the edges; the pairs
+  // (c0, c1), (c2, c3), ... are decided as soon as both are formed, and so are the later rounds,
+  // so that few candidates are live at once.
   const L one = L::splat(1.0), never = L::splat(-__builtin_inf());
   const L face01 = select(gt(p.face[1], p.face[0]), p.face[1], p.face[0]);
   const L face23 = select(gt(p.face[3], p.face[2]), p.face[3], p.face[2]);
@@ -415,30 +434,39 @@ CARDEMO_BATCH_INLINE FilteredSeparation<L> separation3Fast(const Box3One& a, con
   const L face03 = select(gt(face23, face01), face23, face01);
   const L face = select(gt(face45, face03), face45, face03);
   const L floor = L::splat(a.min_edge_length2);
-  Candidate<L> c[10];
-  c[0] = {face, one, face * abs(face)};
-  typename L::Mask sure[9];
+  Candidate<L> held = {face, one, face * abs(face)};  // c_{2k}, waiting for c_{2k+1}
+  Candidate<L> round1[2];                             // (c0, c1) and (c4, c5), for round 2
+  Candidate<L> round2;                                // (c0..c3), for round 3
+  Candidate<L> best;                                  // c0..c7
   typename L::Mask all_sure;
   staticFor<9>([&](auto ec) {
     constexpr int e = decltype(ec)::value;
     const FastEdge<L> f = fastEdge(p, e / 3, e % 3);
-    sure[e] = gt(f.length2, floor);
-    c[e + 1] = {f.gap, select(sure[e], f.length2, one), select(sure[e], f.gap * abs(f.gap), never)};
-    all_sure = e == 0 ? sure[0] : all_sure & sure[e];
+    const typename L::Mask sure = gt(f.length2, floor);
+    const Candidate<L> c{f.gap, select(sure, f.length2, one),
+                         select(sure, f.gap * abs(f.gap), never)};
+    all_sure = e == 0 ? sure : all_sure & sure;
+    if constexpr (e % 2 == 1) {
+      held = c;  // c_{e+1}, e + 1 even
+    } else {
+      const Candidate<L> pair = larger(held, c);  // round 1: (c_e, c_{e+1})
+      if constexpr (e == 0 || e == 4) {
+        round1[e / 4] = pair;
+      } else if constexpr (e == 2) {
+        round2 = larger(round1[0], pair);
+      } else if constexpr (e == 6) {
+        best = larger(round2, larger(round1[1], pair));
+      } else {
+        best = larger(best, pair);  // e == 8: (c8, c9) joins last
+      }
+    }
   });
-  // In place: round k reads c[2k], c[2k + 1], which no earlier round has written.
-  staticFor<5>([&c](auto kc) {
-    constexpr int k = decltype(kc)::value;
-    c[k] = larger(c[2 * k], c[2 * k + 1]);
-  });
-  const Candidate<L> best = larger(larger(c[0], c[1]), larger(c[2], c[3]));
-  const Candidate<L> winner = larger(best, c[4]);
-  const L value = winner.gap / sqrt(winner.length2);
+  const L value = best.gap / sqrt(best.length2);
   // Near zero the sign (the verdict) must be the accurate kernel's: leave those lanes to it.
   const typename L::Mask clear = gt(abs(value), L::splat(2.0 * kSeparationTolerance) * scale3(p));
-  if (allOf(all_sure & clear)) return {value, all_sure & clear};
-  all_sure = certifySkipped(p, sure, lt(one, L::splat(0.0)));
-  return {value, all_sure & clear};
+  if (allOf(all_sure)) [[likely]]
+    return {value, all_sure & clear};
+  return {value, certifyFromMemory<L>(a, b, i) & clear};
 }
 
 template <class L>
@@ -534,6 +562,18 @@ template <class L>
   for (std::size_t k = 0; i + k < last; ++k) hit[i + k] = h[k];
 }
 
+// runSeparation3's open boxes, decided by the accurate kernel. Out of line: inlined into the loop
+// (which is flattened), its code took registers from the filter, which spilled more.
+template <class L>
+[[gnu::noinline]] void decideOpenSeparations(const Box3One& a, const Box3Fields& source,
+                                             const std::size_t* pending, std::size_t count,
+                                             double* separation) {
+  decideOpenBoxes<L::kWidth>(source.field, pending, count, separation,
+                             [&a](const double(&f)[15][L::kWidth], double* group_out) {
+                               store(group_out, separation3<L>(a, arraysOf(f), 0));
+                             });
+}
+
 // On more than one lane, the boxes the filter leaves undecided (separations within about 2^-39 of
 // the pair's scale of zero: resting contacts) go on one by one, as in the boolean pre-filters
 // (filter_run.hpp), so the accurate kernel runs on them alone rather than on each of their lane
@@ -551,10 +591,7 @@ template <class L>
     std::size_t count = 0;
     const Box3Fields source = fieldsOf(b);
     const auto decide_pending = [&] {
-      decideOpenBoxes<L::kWidth>(source.field, pending, count, separation,
-                                 [&a](const double(&f)[15][L::kWidth], double* group_out) {
-                                   store(group_out, separation3<L>(a, arraysOf(f), 0));
-                                 });
+      decideOpenSeparations<L>(a, source, pending, count, separation);
       count = 0;
     };
     for (; i + L::kWidth <= last; i += L::kWidth) {
