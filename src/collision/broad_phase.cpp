@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "geometry/batch_path.hpp"
 
@@ -218,6 +219,28 @@ UniformGrid& UniformGrid::operator=(const UniformGrid& other) {
   return *this;
 }
 
+UniformGrid::UniformGrid(UniformGrid&& other) noexcept {
+  takeFrom(other);
+}
+
+UniformGrid& UniformGrid::operator=(UniformGrid&& other) noexcept {
+  if (this != &other) takeFrom(other);
+  return *this;
+}
+
+void UniformGrid::takeFrom(UniformGrid& other) noexcept {
+  // The arrays keep their addresses, so the views stay valid. `other` is left with no level and
+  // no item (a defaulted move would leave it a level count over no views).
+  size_ = std::exchange(other.size_, 0);
+  bounds_ = other.bounds_;
+  levels_ = std::exchange(other.levels_, {});
+  views_ = std::exchange(other.views_, {});
+  level_count_ = std::exchange(other.level_count_, 0);
+  scan_few_ = other.scan_few_;
+  large_boxes_ = std::exchange(other.large_boxes_, {});
+  large_ids_ = std::exchange(other.large_ids_, {});
+}
+
 void UniformGrid::refreshViews() {
   views_.clear();
   for (const Level& l : levels_) {
@@ -235,20 +258,18 @@ void UniformGrid::refreshViews() {
                       {static_cast<double>(l.nx - 1), static_cast<double>(l.ny - 1)},
                       l.nx});
   }
+  level_count_ = views_.size();
+#if defined(CARDEMO_BATCH_AVX2)
+  scan_few_ = large_boxes_.empty() ? &grid_detail::scanFewAvx2 : nullptr;
+#endif
 }
 
 std::size_t UniformGrid::queryFew(const Aabb2& query, std::uint32_t* few) const {
-#if defined(CARDEMO_BATCH_AVX2)
-  if (large_boxes_.empty() && batchPath() != BatchPath::kPortable) {
-    // A handful of ids, found and sorted in registers (an empty grid has no levels, and a query off
-    // every level's bounds or NaN finds nothing).
-    const grid_detail::QueryBox box{{query.min.x(), query.min.y()}, {query.max.x(), query.max.y()}};
-    return grid_detail::scanFewAvx2(views_.data(), views_.size(), box, few);
+  // A handful of ids, found and sorted in registers (an empty grid has no levels, and a query off
+  // every level's bounds or NaN finds nothing).
+  if (scan_few_ != nullptr && batchPath() != BatchPath::kPortable) {
+    return scan_few_(views_.data(), level_count_, query.min.data(), query.max.data(), few);
   }
-#else
-  (void)query;
-  (void)few;
-#endif
   return grid_detail::kFewIds + 1;
 }
 
@@ -264,18 +285,6 @@ void UniformGrid::query(const Aabb2& query, std::vector<std::uint32_t>& out) con
     return;
   }
   queryBuffered(query, out);
-}
-
-void UniformGrid::query(const Aabb2& query, QueryIds& out) const {
-  // A moved-from QueryIds has lost its storage.
-  if (out.storage_.size() < grid_detail::kFewIds) [[unlikely]]
-    growToFewIds(out.storage_);
-  const std::size_t count = queryFew(query, out.storage_.data());
-  if (count <= grid_detail::kFewIds) [[likely]] {
-    out.count_ = count;
-    return;
-  }
-  queryCrowded(query, out);
 }
 
 [[gnu::noinline]] void UniformGrid::queryCrowded(const Aabb2& query, QueryIds& out) const {

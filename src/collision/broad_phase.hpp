@@ -8,6 +8,7 @@
 
 #include "collision/grid_scan.hpp"
 #include "geometry/aabb.hpp"
+#include "geometry/batch_path.hpp"
 
 namespace cardemo {
 
@@ -74,10 +75,10 @@ class UniformGrid {
   UniformGrid(const UniformGrid& other);
   /// Copies (as the copy constructor).
   UniformGrid& operator=(const UniformGrid& other);
-  /// Moves (the arrays keep their addresses, so do the views).
-  UniformGrid(UniformGrid&& other) noexcept = default;
-  /// Moves.
-  UniformGrid& operator=(UniformGrid&& other) noexcept = default;
+  /// Moves (the arrays keep their addresses, so do the views); `other` is left empty.
+  UniformGrid(UniformGrid&& other) noexcept;
+  /// Moves; `other` is left empty.
+  UniformGrid& operator=(UniformGrid&& other) noexcept;
   /// Frees the levels.
   ~UniformGrid() = default;
 
@@ -85,7 +86,20 @@ class UniformGrid {
   /// each once, in increasing id order. Does not allocate once `out` has grown to its peak size.
   void query(const Aabb2& query, std::vector<std::uint32_t>& out) const;
   /// The same ids into `out`: the cheaper form (no std::vector size bookkeeping per query).
-  void query(const Aabb2& query, QueryIds& out) const;
+  void query(const Aabb2& query, QueryIds& out) const {
+    // Inline, so that the common case costs its caller one call (the scan) and no copy of the box.
+    // A moved-from `out` has lost its storage: the crowded path restores it.
+    if (scan_few_ != nullptr && out.storage_.size() >= grid_detail::kFewIds &&
+        batchPath() != BatchPath::kPortable) [[likely]] {
+      const std::size_t count = scan_few_(views_.data(), level_count_, query.min.data(),
+                                          query.max.data(), out.storage_.data());
+      if (count <= grid_detail::kFewIds) [[likely]] {
+        out.count_ = count;
+        return;
+      }
+    }
+    queryCrowded(query, out);
+  }
 
   /// Number of items the grid was built over.
   [[nodiscard]] std::size_t size() const { return size_; }
@@ -116,6 +130,9 @@ class UniformGrid {
   Aabb2 bounds_;
   std::vector<Level> levels_;
   std::vector<grid_detail::LevelArrays> views_;  // the scans' plain view of each level
+  std::size_t level_count_ = 0;                  // views_.size(), kept for the inline query
+  // grid_detail::scanFewAvx2 when it is built and no item is oversized, else null.
+  grid_detail::ScanFew scan_few_ = nullptr;
   std::vector<Aabb2> large_boxes_;  // items too big for any level: tested by every query
   std::vector<std::uint32_t> large_ids_;
 
@@ -123,12 +140,13 @@ class UniformGrid {
   // order) and returns how many were found, or more than kFewIds when they did not fit (`few` is
   // then unspecified); none when the path does not apply (oversized items, or no AVX2).
   [[nodiscard]] std::size_t queryFew(const Aabb2& query, std::uint32_t* few) const;
-  // query(QueryIds) when queryFew does not apply or finds more than it keeps. Out of line, so the
-  // common path saves few registers.
+  // query(QueryIds) when the few-ids scan does not apply or finds more than it keeps. Out of
+  // line, so the inline common path stays small.
   void queryCrowded(const Aabb2& query, QueryIds& out) const;
   // The query when scanFewAvx2 is not used or finds more than it keeps: the scan stores ids to a
   // buffer, which is then sorted.
   void queryBuffered(const Aabb2& query, std::vector<std::uint32_t>& out) const;
+  void takeFrom(UniformGrid& other) noexcept;
   static Level buildLevel(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members);
   void refreshViews();
 };

@@ -35,26 +35,32 @@ struct Window {
 
 // An overlapping box has its corner at or above query.min - reach (broad_phase.cpp, buildLevel),
 // and the cell map is monotone, so these cells hold every box that may touch the query.
-[[gnu::always_inline]] inline Window windowOf(const LevelArrays& l, const QueryBox& q) {
+[[gnu::always_inline]] inline Window windowOf(const LevelArrays& l, const double* q_min,
+                                              const double* q_max) {
 #if defined(__SSE2__)
   // Both axes at once; max(t, 0) returns its second operand (0) for NaN, as cellIndex does.
   const __m128d origin = _mm_loadu_pd(l.bounds_min), inv = _mm_set1_pd(l.inv_cell);
   const __m128d last = _mm_loadu_pd(l.last_cell), zero = _mm_setzero_pd();
-  const __m128d low = _mm_sub_pd(_mm_loadu_pd(q.min), _mm_loadu_pd(l.reach));
+  const __m128d low = _mm_sub_pd(_mm_loadu_pd(q_min), _mm_loadu_pd(l.reach));
   const __m128d lo = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(low, origin), inv), zero), last);
   const __m128d hi =
-      _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(q.max), origin), inv), zero), last);
+      _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(q_max), origin), inv), zero), last);
   // Cell indices are below 2^30, so 32-bit conversions are exact.
   const __m128i lo_cells = _mm_cvttpd_epi32(lo), hi_cells = _mm_cvttpd_epi32(hi);
   return {_mm_cvtsi128_si32(lo_cells), _mm_cvtsi128_si32(hi_cells),
           _mm_cvtsi128_si32(_mm_shuffle_epi32(lo_cells, 1)),
           _mm_cvtsi128_si32(_mm_shuffle_epi32(hi_cells, 1))};
 #else
-  return {cellIndex(q.min[0] - l.reach[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
-          cellIndex(q.max[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
-          cellIndex(q.min[1] - l.reach[1], l.bounds_min[1], l.inv_cell, l.last_cell[1]),
-          cellIndex(q.max[1], l.bounds_min[1], l.inv_cell, l.last_cell[1])};
+  return {cellIndex(q_min[0] - l.reach[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
+          cellIndex(q_max[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
+          cellIndex(q_min[1] - l.reach[1], l.bounds_min[1], l.inv_cell, l.last_cell[1]),
+          cellIndex(q_max[1], l.bounds_min[1], l.inv_cell, l.last_cell[1])};
 #endif
+}
+
+// The same for a QueryBox.
+[[gnu::always_inline]] inline Window windowOf(const LevelArrays& l, const QueryBox& q) {
+  return windowOf(l, q.min, q.max);
 }
 
 // True when the query touches the level's bounds (false for a NaN query).

@@ -62,11 +62,17 @@ void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const Qu
 /// Most ids scanFewAvx2 hands back.
 inline constexpr std::size_t kFewIds = 8;
 
-/// The common case of a query, with AVX2: returns how many boxes touch the query and, when that
-/// is at most kFewIds, writes their ids to few[0, kFewIds) in increasing order (the slots past the
-/// count hold 0xFFFFFFFF). A larger count leaves `few` unspecified: run scanLevelsAvx2 instead.
-/// Writes nothing else to memory. Call only when geometry/batch_path says the CPU has AVX2.
-std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& query,
-                        std::uint32_t* few);
+/// The common case of a query, with AVX2: returns how many boxes touch the closed box [query_min,
+/// query_max] (each pointing to x then y) and, when that is at most kFewIds, writes their ids to
+/// few[0, kFewIds) in increasing order (the slots past the count hold 0xFFFFFFFF). A larger count
+/// leaves `few` unspecified: run scanLevelsAvx2 instead. Writes nothing else to memory. Call only
+/// when geometry/batch_path says the CPU has AVX2.
+std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const double* query_min,
+                        const double* query_max, std::uint32_t* few);
+
+/// The type of scanFewAvx2, which UniformGrid keeps a pointer to (null when it is not built).
+using ScanFew = std::size_t (*)(const LevelArrays* levels, std::size_t level_count,
+                                const double* query_min, const double* query_max,
+                                std::uint32_t* few);
 
 }  // namespace cardemo::grid_detail

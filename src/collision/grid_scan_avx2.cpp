@@ -116,10 +116,10 @@ void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const Qu
   scanLevels<4>(levels, level_count, q, sink, step4);
 }
 
-std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& q,
-                        std::uint32_t* few) {
-  const __m256d qmin_x = _mm256_set1_pd(q.min[0]), qmin_y = _mm256_set1_pd(q.min[1]);
-  const __m256d qmax_x = _mm256_set1_pd(q.max[0]), qmax_y = _mm256_set1_pd(q.max[1]);
+std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const double* query_min,
+                        const double* query_max, std::uint32_t* few) {
+  const __m256d qmin_x = _mm256_set1_pd(query_min[0]), qmin_y = _mm256_set1_pd(query_min[1]);
+  const __m256d qmax_x = _mm256_set1_pd(query_max[0]), qmax_y = _mm256_set1_pd(query_max[1]);
   const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
   // The ids found so far, in scan order, in a register: each step moves its found ids (up to
   // four) into slots count .. count + found - 1 with one permute and one blend. `at` is the
@@ -177,12 +177,13 @@ std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, cons
   // No test against a level's bounds: off them the window is clamped to the edge cells, whose
   // boxes the query does not touch (and a NaN query touches nothing). The common query (one
   // level, one word of rows) runs apart, so that fewer values are live in its loops.
-  const Window first = level_count == 1 ? windowOf(levels[0], q) : Window{1, 0, 1, 0};
+  const Window first =
+      level_count == 1 ? windowOf(levels[0], query_min, query_max) : Window{1, 0, 1, 0};
   if (level_count == 1 && first.x0 <= first.x1 && first.y1 - first.y0 < 56) [[likely]] {
     if (!scanRows(levels[0], first, first.y0)) return kFewIds + 1;  // more than kept
   } else {
     for (std::size_t i = 0; i < level_count; ++i) {
-      const Window w = windowOf(levels[i], q);
+      const Window w = windowOf(levels[i], query_min, query_max);
       if (w.x1 < w.x0) continue;  // an inverted query
       for (std::int64_t base = w.y0; base <= w.y1; base += 56) {
         if (!scanRows(levels[i], w, base)) return kFewIds + 1;

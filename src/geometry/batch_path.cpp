@@ -53,12 +53,13 @@ BatchPath widestUpTo(BatchPath wanted) {
   return BatchPath::kPortable;
 }
 
-// The path in use, or kUnchosen before the first batchPath() or setBatchPath(). Constant-
-// initialised, so it is valid before any dynamic initialiser runs, and a check costs one load and
-// one compare: with a function-local static, every dispatching caller also inlined the guard and
-// the first call's getenv, and saved registers for them.
-constexpr int kUnchosen = -1;
-std::atomic<int> chosen{kUnchosen};
+}  // namespace
+
+namespace batch_path_detail {
+
+// With a function-local static instead, every dispatching caller also inlined the guard and the
+// first call's getenv, and saved registers for them.
+constinit std::atomic<int> chosen{kUnchosen};
 
 [[gnu::noinline, gnu::cold]] BatchPath chooseFromEnvironment() {
   int expected = kUnchosen;
@@ -68,7 +69,7 @@ std::atomic<int> chosen{kUnchosen};
   return static_cast<BatchPath>(chosen.load(std::memory_order_relaxed));
 }
 
-}  // namespace
+}  // namespace batch_path_detail
 
 bool batchPathAvailable(BatchPath path) {
   return static_cast<int>(path) <= static_cast<int>(ceiling()) && cpuCanRun(path);
@@ -83,16 +84,9 @@ BatchPath batchPathNamed(const char* name) {
   return widestUpTo(BatchPath::kAvx512);
 }
 
-BatchPath batchPath() {
-  const int path = chosen.load(std::memory_order_relaxed);
-  if (path != kUnchosen) [[likely]]
-    return static_cast<BatchPath>(path);
-  return chooseFromEnvironment();
-}
-
 void setBatchPath(BatchPath path) {
   assert(batchPathAvailable(path));
-  chosen.store(static_cast<int>(path), std::memory_order_relaxed);
+  batch_path_detail::chosen.store(static_cast<int>(path), std::memory_order_relaxed);
 }
 
 const char* batchPathName(BatchPath path) {

@@ -355,11 +355,29 @@ TEST(BroadPhase, CopiesAndMovesQueryTheirOwnArrays) {
   for (int q = 0; q < 300; ++q) queries.push_back(randomQuery(scene, rng));
   const auto expectMatches = [&](const UniformGrid& grid, const char* what) {
     std::vector<std::uint32_t> got, want;
+    QueryIds ids;
     for (std::size_t q = 0; q < queries.size(); ++q) {
       grid.query(queries[q], got);
       brute.query(queries[q], want);
       ASSERT_EQ(got, want) << what << ": query " << q;
+      grid.query(queries[q], ids);
+      ASSERT_EQ(std::vector<std::uint32_t>(ids.begin(), ids.end()), want)
+          << what << ": query " << q;
     }
+  };
+  // A grid moved from holds nothing: both query forms find nothing (the inline form must not
+  // scan views that went with the move).
+  const auto expectEmpty = [&](const UniformGrid& grid, const char* what) {
+    std::vector<std::uint32_t> got{7};
+    QueryIds ids;
+    for (const Aabb2& query : queries) {
+      grid.query(query, got);
+      ASSERT_TRUE(got.empty()) << what;
+      grid.query(query, ids);
+      ASSERT_TRUE(ids.empty()) << what;
+    }
+    EXPECT_EQ(grid.size(), 0u) << what;
+    EXPECT_EQ(grid.levelCount(), 0u) << what;
   };
   auto original = std::make_unique<UniformGrid>(scene);
   const UniformGrid copy(*original);
@@ -370,9 +388,11 @@ TEST(BroadPhase, CopiesAndMovesQueryTheirOwnArrays) {
   expectMatches(assigned, "copy-assigned");
   UniformGrid moved(std::move(assigned));
   expectMatches(moved, "moved");
+  expectEmpty(assigned, "moved from");  // NOLINT(bugprone-use-after-move): the state is specified
   UniformGrid move_assigned(std::span<const Aabb2>{});
   move_assigned = std::move(moved);
   expectMatches(move_assigned, "move-assigned");
+  expectEmpty(moved, "move-assigned from");  // NOLINT(bugprone-use-after-move)
   EXPECT_EQ(move_assigned.size(), scene.size());
   EXPECT_EQ(move_assigned.memoryBytes(), copy.memoryBytes());
 }
