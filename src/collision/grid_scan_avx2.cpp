@@ -91,44 +91,23 @@ template <int kTakeMax>
   return v;
 }
 
-}  // namespace
-
-void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& q,
-                    IdSink& sink) {
-  const __m256d qmin_x = _mm256_set1_pd(q.min[0]), qmin_y = _mm256_set1_pd(q.min[1]);
-  const __m256d qmax_x = _mm256_set1_pd(q.max[0]), qmax_y = _mm256_set1_pd(q.max[1]);
-  const auto step4 = [&](const Boxes& a, std::uint32_t k, std::uint32_t end, std::uint32_t* buffer,
-                         std::size_t count) {
-    // Closed intervals: touching counts. Ordered comparisons, so a NaN box is never found.
-    __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(a.min_x + k), qmax_x, _CMP_LE_OQ),
-                               _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(a.max_x + k), _CMP_LE_OQ));
-    in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(a.min_y + k), qmax_y, _CMP_LE_OQ));
-    in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(a.max_y + k), _CMP_LE_OQ));
-    const std::uint32_t left = end - k;
-    const unsigned bits =
-        static_cast<unsigned>(_mm256_movemask_pd(in)) & kLive[left < 4 ? left : 4];
-    // All four ids are stored, the found ones first; the count advances past those only.
-    const __m128i ids = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a.ids + k));
-    const __m128i order = _mm_load_si128(reinterpret_cast<const __m128i*>(kCompress.shuffle[bits]));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(buffer + count), _mm_shuffle_epi8(ids, order));
-    return count + kCompress.count[bits];
-  };
-  scanLevels<4>(levels, level_count, q, sink, step4);
-}
-
-std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const double* query_min,
-                        const double* query_max, std::uint32_t* few) {
-  const __m256d qmin_x = _mm256_set1_pd(query_min[0]), qmin_y = _mm256_set1_pd(query_min[1]);
-  const __m256d qmax_x = _mm256_set1_pd(query_max[0]), qmax_y = _mm256_set1_pd(query_max[1]);
-  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
-  // The ids found so far, in scan order, in a register: each step moves its found ids (up to
-  // four) into slots count .. count + found - 1 with one permute and one blend. `at` is the
-  // count in rows of kFew.slot.
+// scanFewAvx2's state: the query, and the ids found so far, in scan order, in a register. Each
+// step moves its found ids (up to four) into slots count .. count + found - 1 with one permute and
+// one blend; `at` is the count in rows of kFew.slot.
+struct FewIds {
+  __m256d qmin_x, qmin_y, qmax_x, qmax_y;
   __m256 found = _mm256_setzero_ps();
   std::size_t at = 0;
+
+  [[gnu::always_inline]] FewIds(const double* query_min, const double* query_max)
+      : qmin_x(_mm256_set1_pd(query_min[0])),
+        qmin_y(_mm256_set1_pd(query_min[1])),
+        qmax_x(_mm256_set1_pd(query_max[0])),
+        qmax_y(_mm256_set1_pd(query_max[1])) {}
+
   // Rows base .. min(base + 55, w.y1) of level l; false when they hold more ids than are kept.
-  const auto scanRows = [&](const LevelArrays& l, const Window& w, std::int64_t base)
-      __attribute__((always_inline)) {
+  [[gnu::always_inline]] bool rows(const LevelArrays& l, const Window& w, std::int64_t base) {
+    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
     const double *const min_x = l.min_x, *const min_y = l.min_y;
     const double *const max_x = l.max_x, *const max_y = l.max_y;
     const std::uint32_t* const ids = l.ids;
@@ -138,14 +117,14 @@ std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, cons
     const std::uint32_t* const end = l.cell_start + base * nx + w.x1 + 1;
     // Rows base .. base + 55 from one unaligned load (x86 is little-endian, so bit y of the bit
     // set is bit y % 8 of byte y / 8; the word past the last row's keeps the load inside).
-    std::uint64_t rows;
-    __builtin_memcpy(&rows, reinterpret_cast<const unsigned char*>(l.row_bits) + (base >> 3),
-                     sizeof rows);
-    rows >>= base & 7;
+    std::uint64_t occupied;
+    __builtin_memcpy(&occupied, reinterpret_cast<const unsigned char*>(l.row_bits) + (base >> 3),
+                     sizeof occupied);
+    occupied >>= base & 7;
     const std::int64_t last = w.y1 - base;
-    rows &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
-    for (; rows != 0; rows &= rows - 1) {
-      const std::int64_t row = __builtin_ctzll(rows) * nx;
+    occupied &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
+    for (; occupied != 0; occupied &= occupied - 1) {
+      const std::int64_t row = __builtin_ctzll(occupied) * nx;
       std::uint32_t k = first[row];
       const std::uint32_t stop = end[row];
       // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
@@ -173,30 +152,75 @@ std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, cons
       } while (k < stop);
     }
     return true;
-  };
-  // No test against a level's bounds: off them the window is clamped to the edge cells, whose
-  // boxes the query does not touch (and a NaN query touches nothing). The common query (one
-  // level, one word of rows) runs apart, so that fewer values are live in its loops.
-  const Window first =
-      level_count == 1 ? windowOf(levels[0], query_min, query_max) : Window{1, 0, 1, 0};
-  if (level_count == 1 && first.x0 <= first.x1 && first.y1 - first.y0 < 56) [[likely]] {
-    if (!scanRows(levels[0], first, first.y0)) return kFewIds + 1;  // more than kept
-  } else {
-    for (std::size_t i = 0; i < level_count; ++i) {
-      const Window w = windowOf(levels[i], query_min, query_max);
-      if (w.x1 < w.x0) continue;  // an inverted query
-      for (std::int64_t base = w.y0; base <= w.y1; base += 56) {
-        if (!scanRows(levels[i], w, base)) return kFewIds + 1;
-      }
+  }
+
+  // Writes the ids found to few[0, kFewIds) in increasing order and returns how many.
+  [[gnu::always_inline]] std::size_t finish(std::uint32_t* few) const {
+    const std::size_t count = at / sizeof kFew.slot[0];
+    // Slots past the count sort last.
+    const __m256i unused = _mm256_cmpgt_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7),
+                                              _mm256_set1_epi32(static_cast<int>(count) - 1));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(few),
+                        sort8(_mm256_or_si256(_mm256_castps_si256(found), unused)));
+    return count;
+  }
+};
+
+// scanFewAvx2 for any number of levels and rows.
+[[gnu::noinline]] std::size_t scanFewLevels(const LevelArrays* levels, std::size_t level_count,
+                                            const double* query_min, const double* query_max,
+                                            std::uint32_t* few) {
+  FewIds scan(query_min, query_max);
+  for (std::size_t i = 0; i < level_count; ++i) {
+    const Window w = windowOf(levels[i], query_min, query_max);
+    if (w.x1 < w.x0) continue;  // an inverted query
+    for (std::int64_t base = w.y0; base <= w.y1; base += 56) {
+      if (!scan.rows(levels[i], w, base)) return kFewIds + 1;
     }
   }
-  const std::size_t count = at / sizeof kFew.slot[0];
-  // Slots past the count sort last.
-  const __m256i unused = _mm256_cmpgt_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7),
-                                            _mm256_set1_epi32(static_cast<int>(count) - 1));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(few),
-                      sort8(_mm256_or_si256(_mm256_castps_si256(found), unused)));
-  return count;
+  return scan.finish(few);
+}
+
+}  // namespace
+
+void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const QueryBox& q,
+                    IdSink& sink) {
+  const __m256d qmin_x = _mm256_set1_pd(q.min[0]), qmin_y = _mm256_set1_pd(q.min[1]);
+  const __m256d qmax_x = _mm256_set1_pd(q.max[0]), qmax_y = _mm256_set1_pd(q.max[1]);
+  const auto step4 = [&](const Boxes& a, std::uint32_t k, std::uint32_t end, std::uint32_t* buffer,
+                         std::size_t count) {
+    // Closed intervals: touching counts. Ordered comparisons, so a NaN box is never found.
+    __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(a.min_x + k), qmax_x, _CMP_LE_OQ),
+                               _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(a.max_x + k), _CMP_LE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(a.min_y + k), qmax_y, _CMP_LE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(a.max_y + k), _CMP_LE_OQ));
+    const std::uint32_t left = end - k;
+    const unsigned bits =
+        static_cast<unsigned>(_mm256_movemask_pd(in)) & kLive[left < 4 ? left : 4];
+    // All four ids are stored, the found ones first; the count advances past those only.
+    const __m128i ids = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a.ids + k));
+    const __m128i order = _mm_load_si128(reinterpret_cast<const __m128i*>(kCompress.shuffle[bits]));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(buffer + count), _mm_shuffle_epi8(ids, order));
+    return count + kCompress.count[bits];
+  };
+  scanLevels<4>(levels, level_count, q, sink, step4);
+}
+
+std::size_t scanFewAvx2(const LevelArrays* levels, std::size_t level_count, const double* query_min,
+                        const double* query_max, std::uint32_t* few) {
+  // No test against a level's bounds: off them the window is clamped to the edge cells, whose
+  // boxes the query does not touch (and a NaN query touches nothing). The common query (one
+  // level, one word of rows) runs here; any other in a function of its own, so that this one
+  // keeps fewer values live (and saves fewer registers).
+  if (level_count == 1) [[likely]] {
+    const Window w = windowOf(levels[0], query_min, query_max);
+    if (w.x0 <= w.x1 && w.y1 - w.y0 < 56) [[likely]] {
+      FewIds scan(query_min, query_max);
+      if (!scan.rows(levels[0], w, w.y0)) return kFewIds + 1;  // more than kept
+      return scan.finish(few);
+    }
+  }
+  return scanFewLevels(levels, level_count, query_min, query_max, few);
 }
 
 }  // namespace cardemo::grid_detail
