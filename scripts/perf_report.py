@@ -266,6 +266,29 @@ def broad_tables(r, csv_rows):
             csv_rows.append(["broad-build", layout, size, "ns/car", bld, bldb, ratio(bldb, bld), None])
             csv_rows.append(["broad-memory", layout, size, "bytes/car", mem, memb, ratio(memb, mem),
                              64.0])
+    scattered = []
+    for layout in ("lot", "random"):
+        for size in sizes_in(r, f"broad/scattered/{layout}/"):
+            q = r.ns_per_item(f"broad/scattered/{layout}/{size}/cardemo")
+            qb = r.ns_per_item(f"broad/scattered/{layout}/{size}/box2d")
+            cand = r.counter(f"broad/scattered/{layout}/{size}/cardemo", "candidates")
+            candb = r.counter(f"broad/scattered/{layout}/{size}/box2d", "candidates")
+            scattered.append([layout, size, fmt(q, " ns"), fmt(qb, " ns"), fmt(ratio(qb, q), "x"),
+                              f"{fmt(cand)} / {fmt(candb)}"])
+            csv_rows.append(["broad-scattered", layout, size, "ns/query", q, qb, ratio(qb, q),
+                             None])
+    scattered_text = ""
+    if scattered:
+        scattered_text = (
+            "\n\nScattered queries: 2^20 car-sized boxes at random places and headings over the "
+            "whole lot, cycled (32 MiB of boxes, so with the grid or the tree they do not stay in "
+            "the caches): each query finds its part of the structure cold, as queries spread over "
+            "a large world would. The game's car does not query this way (it moves a little each "
+            "step, as the path above does); no target applies.\n\n"
+            "Reproduce: `build-perf/bench/cardemo_bench --benchmark_filter='^broad/scattered/'`"
+            "\n\n" +
+            table(["layout", "cars", "query", "Box2D query", "ratio",
+                   "candidates (ours / Box2D)"], scattered))
     return ("UniformGrid against b2DynamicTree on the same parked-car AABBs, Box2D's tree built "
             "by inserting them in a spatially coherent order (the lot in its row order, the random "
             "layout in Morton order; the order is computed beforehand and not timed). Query: a "
@@ -278,7 +301,7 @@ def broad_tables(r, csv_rows):
             "Reproduce: `build-perf/bench/cardemo_bench --benchmark_filter='^broad/'`\n\n" +
             table(["layout", "cars", "query", "Box2D query", "ratio", "status (<= 20 ns at 1M)",
                    "build/car", "Box2D build/car", "ratio", "bytes/car", "Box2D bytes/car",
-                   "status (<= 64 B)", "candidates (ours / Box2D)"], rows))
+                   "status (<= 64 B)", "candidates (ours / Box2D)"], rows) + scattered_text)
 
 
 def micros(x):

@@ -273,6 +273,22 @@ std::vector<Aabb2> queryPath(const std::vector<Aabb2>& boxes, std::size_t steps)
   return path;
 }
 
+std::vector<Aabb2> scatteredQueries(const std::vector<Aabb2>& boxes, std::size_t count) {
+  Aabb2 world = boxes.empty() ? Aabb2{} : boxes[0];
+  for (const Aabb2& b : boxes) world = world.merged(b);
+  std::mt19937_64 rng(count * 131 + boxes.size());
+  std::uniform_real_distribution<double> x(world.min.x(), world.max.x());
+  std::uniform_real_distribution<double> y(world.min.y(), world.max.y());
+  std::uniform_real_distribution<double> turn(-std::numbers::pi, std::numbers::pi);
+  std::vector<Aabb2> queries;
+  queries.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Eigen::Vector2d c{x(rng), y(rng)};
+    queries.push_back(Obb2{c, unitFromRadians(turn(rng)), {2.25, 0.9}}.aabb());
+  }
+  return queries;
+}
+
 Scene lotScene(std::size_t n) {
   const std::vector<LotCarWithId> cars = lotWithIds(n);
   Scene scene;

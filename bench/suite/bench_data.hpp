@@ -75,6 +75,10 @@ struct LotCar {
 /// Car-sized query boxes (AABB of a 4.5 x 1.8 m car, turning) moving in 0.25 m steps through
 /// the bounds of `boxes`, crossing aisles and rows.
 [[nodiscard]] std::vector<Aabb2> queryPath(const std::vector<Aabb2>& boxes, std::size_t steps);
+/// `count` car-sized query boxes (AABB of a 4.5 x 1.8 m car) at uniformly random places and
+/// headings over the bounds of `boxes`, each independent of the one before (seeded).
+[[nodiscard]] std::vector<Aabb2> scatteredQueries(const std::vector<Aabb2>& boxes,
+                                                  std::size_t count);
 
 /// A scene of `n` parked cars in the lot layout; the player waits at the west end of the middle
 /// aisle, facing east, with the most health a scene may give (no game over in the drives).

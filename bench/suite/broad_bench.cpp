@@ -1,5 +1,6 @@
 // Broad phase over N parked cars (a lot layout and a random one): build time per car, query time
-// for a car-sized box moving through the lot, and bytes per car; UniformGrid against Box2D's
+// for a car-sized box moving through the lot (and, at the largest size, for boxes scattered over
+// it), and bytes per car; UniformGrid against Box2D's
 // b2DynamicTree (CreateProxy per box in a spatially coherent order, Query with a callback) on the
 // same boxes.
 
@@ -22,6 +23,11 @@ namespace {
 
 constexpr std::size_t kPathSteps = 8192;
 
+// Scattered queries per row: 2^20 boxes (32 MiB), more than the caches hold with the grid or the
+// tree, so each query finds its part of the structure cold, as queries spread over a large world
+// (many cars, or a car teleported) would.
+constexpr std::size_t kScatteredQueries = std::size_t{1} << 20;
+
 struct Lot {
   std::vector<Aabb2> boxes;
   std::vector<Aabb2> path;
@@ -34,6 +40,21 @@ const Lot& lot(bool random, std::size_t n) {
     slot = std::make_unique<Lot>();
     slot->boxes = boundsOf(random ? randomLayout(n) : lotLayout(n));
     slot->path = queryPath(slot->boxes, kPathSteps);
+  }
+  return *slot;
+}
+
+// The path through the lot, as the game's car queries it.
+const std::vector<Aabb2>& pathQueries(bool random, std::size_t n) {
+  return lot(random, n).path;
+}
+
+const std::vector<Aabb2>& scatteredQueries(bool random, std::size_t n) {
+  static std::map<std::pair<bool, std::size_t>, std::unique_ptr<std::vector<Aabb2>>> cache;
+  auto& slot = cache[{random, n}];
+  if (!slot) {
+    slot = std::make_unique<std::vector<Aabb2>>(
+        cardemo::bench::scatteredQueries(lot(random, n).boxes, kScatteredQueries));
   }
   return *slot;
 }
@@ -137,6 +158,55 @@ struct TreeCollector {
 };
 #endif
 
+using QueriesOf = const std::vector<Aabb2>& (*)(bool random, std::size_t n);
+
+// The query rows `group` + engine: each iteration queries the next box of queriesOf(random, n)
+// (cycled), the grid into a QueryIds as World::step does, Box2D's tree with a callback.
+void registerQueries(const std::string& group, bool random, std::size_t n, QueriesOf queriesOf) {
+  benchmark::RegisterBenchmark(
+      (group + "cardemo").c_str(), [random, n, queriesOf](benchmark::State& s) {
+        const std::vector<Aabb2>& queries = queriesOf(random, n);
+        const UniformGrid& g = grid(random, n);
+        QueryIds out;
+        out.reserve(4096);
+        std::size_t step = 0, found = 0;
+        for (auto _ : s) {
+          g.query(queries[step], out);
+          found += out.size();
+          step = (step + 1) % queries.size();
+          benchmark::DoNotOptimize(out.begin());
+        }
+        s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()));
+        s.counters["candidates"] = static_cast<double>(found) /
+                                   static_cast<double>(std::max<std::int64_t>(1, s.iterations()));
+        s.counters["bytes_per_car"] = static_cast<double>(g.memoryBytes()) / static_cast<double>(n);
+        s.counters["cell_m"] = g.levelCount() > 0 ? g.cellSize(0) : 0.0;
+      });
+#if defined(CARDEMO_HAVE_COMPARE)
+  benchmark::RegisterBenchmark(
+      (group + "box2d").c_str(), [random, n, queriesOf](benchmark::State& s) {
+        const std::vector<Aabb2>& queries = queriesOf(random, n);
+        const b2DynamicTree& t = tree(random, n);
+        std::vector<std::uint32_t> out;
+        out.reserve(4096);
+        TreeCollector collector{&t, &out};
+        std::size_t step = 0, found = 0;
+        for (auto _ : s) {
+          out.clear();
+          t.Query(&collector, toB2(queries[step]));
+          found += out.size();
+          step = (step + 1) % queries.size();
+          benchmark::DoNotOptimize(out.data());
+        }
+        s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()));
+        s.counters["candidates"] = static_cast<double>(found) /
+                                   static_cast<double>(std::max<std::int64_t>(1, s.iterations()));
+        s.counters["bytes_per_car"] =
+            static_cast<double>((2 * n - 1) * sizeof(b2TreeNode)) / static_cast<double>(n);
+      });
+#endif
+}
+
 void registerLayout(bool random, std::size_t n) {
   const std::string prefix = std::string(random ? "random/" : "lot/") + sizeLabel(n) + "/";
   benchmark::RegisterBenchmark(
@@ -152,26 +222,7 @@ void registerLayout(bool random, std::size_t n) {
                             static_cast<std::int64_t>(n));
         s.counters["bytes_per_car"] = static_cast<double>(bytes) / static_cast<double>(n);
       });
-  benchmark::RegisterBenchmark(
-      ("broad/query/" + prefix + "cardemo").c_str(), [random, n](benchmark::State& s) {
-        const Lot& l = lot(random, n);
-        const UniformGrid& g = grid(random, n);
-        // QueryIds, as World::step queries the grid.
-        QueryIds out;
-        out.reserve(4096);
-        std::size_t step = 0, found = 0;
-        for (auto _ : s) {
-          g.query(l.path[step], out);
-          found += out.size();
-          step = (step + 1) % l.path.size();
-          benchmark::DoNotOptimize(out.begin());
-        }
-        s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()));
-        s.counters["candidates"] = static_cast<double>(found) /
-                                   static_cast<double>(std::max<std::int64_t>(1, s.iterations()));
-        s.counters["bytes_per_car"] = static_cast<double>(g.memoryBytes()) / static_cast<double>(n);
-        s.counters["cell_m"] = g.levelCount() > 0 ? g.cellSize(0) : 0.0;
-      });
+  registerQueries("broad/query/" + prefix, random, n, &pathQueries);
 #if defined(CARDEMO_HAVE_COMPARE)
   benchmark::RegisterBenchmark(
       ("broad/build/" + prefix + "box2d").c_str(), [random, n](benchmark::State& s) {
@@ -188,27 +239,6 @@ void registerLayout(bool random, std::size_t n) {
         s.counters["bytes_per_car"] =
             static_cast<double>((2 * n - 1) * sizeof(b2TreeNode)) / static_cast<double>(n);
       });
-  benchmark::RegisterBenchmark(
-      ("broad/query/" + prefix + "box2d").c_str(), [random, n](benchmark::State& s) {
-        const Lot& l = lot(random, n);
-        const b2DynamicTree& t = tree(random, n);
-        std::vector<std::uint32_t> out;
-        out.reserve(4096);
-        TreeCollector collector{&t, &out};
-        std::size_t step = 0, found = 0;
-        for (auto _ : s) {
-          out.clear();
-          t.Query(&collector, toB2(l.path[step]));
-          found += out.size();
-          step = (step + 1) % l.path.size();
-          benchmark::DoNotOptimize(out.data());
-        }
-        s.SetItemsProcessed(static_cast<std::int64_t>(s.iterations()));
-        s.counters["candidates"] = static_cast<double>(found) /
-                                   static_cast<double>(std::max<std::int64_t>(1, s.iterations()));
-        s.counters["bytes_per_car"] =
-            static_cast<double>((2 * n - 1) * sizeof(b2TreeNode)) / static_cast<double>(n);
-      });
 #endif
 }
 
@@ -220,6 +250,13 @@ void registerBroad(const BenchConfig& config) {
                    : std::vector<std::size_t>{100, 1000, 10000, 100000, 1000000};
   for (const bool random : {false, true}) {
     for (const std::size_t n : sizes) registerLayout(random, n);
+    // Queries spread over the whole world, at the largest size only (2^20 query boxes a layout).
+    if (!config.smoke) {
+      const std::size_t n = sizes.back();
+      registerQueries(
+          "broad/scattered/" + std::string(random ? "random/" : "lot/") + sizeLabel(n) + "/",
+          random, n, &scatteredQueries);
+    }
   }
 }
 
