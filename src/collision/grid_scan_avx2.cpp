@@ -93,10 +93,11 @@ template <int kTakeMax>
 
 // scanFewAvx2's state: the query, and the ids found so far, in scan order, in a register. Each
 // step moves its found ids (up to four) into slots count .. count + found - 1 with one permute and
-// one blend; `at` is the count in rows of kFew.slot.
+// one blend; `at` is the count in rows of kFew.slot. The slots start as 0xFFFFFFFF (above any id,
+// which is below 2^32 - 1), so those past the count sort last as they are.
 struct FewIds {
   __m256d qmin_x, qmin_y, qmax_x, qmax_y;
-  __m256 found = _mm256_setzero_ps();
+  __m256 found = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
   std::size_t at = 0;
 
   [[gnu::always_inline]] FewIds(const double* query_min, const double* query_max)
@@ -156,13 +157,8 @@ struct FewIds {
 
   // Writes the ids found to few[0, kFewIds) in increasing order and returns how many.
   [[gnu::always_inline]] std::size_t finish(std::uint32_t* few) const {
-    const std::size_t count = at / sizeof kFew.slot[0];
-    // Slots past the count sort last.
-    const __m256i unused = _mm256_cmpgt_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7),
-                                              _mm256_set1_epi32(static_cast<int>(count) - 1));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(few),
-                        sort8(_mm256_or_si256(_mm256_castps_si256(found), unused)));
-    return count;
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(few), sort8(_mm256_castps_si256(found)));
+    return at / sizeof kFew.slot[0];
   }
 };
 
