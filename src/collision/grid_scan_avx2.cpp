@@ -125,9 +125,10 @@ struct FewIds {
     const std::int64_t last = w.y1 - base;
     occupied &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
     for (; occupied != 0; occupied &= occupied - 1) {
-      const std::int64_t row = __builtin_ctzll(occupied) * nx;
-      std::uint32_t k = first[row];
-      const std::uint32_t stop = end[row];
+      const std::int64_t row = static_cast<unsigned>(__builtin_ctzll(occupied)) * nx;
+      // 64-bit, so that indexing by k needs no widening each step.
+      std::int64_t k = first[row];
+      const std::int64_t stop = end[row];
       // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
       do {
         // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found.
@@ -136,7 +137,7 @@ struct FewIds {
         in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(min_y + k), qmax_y, _CMP_LE_OQ));
         in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(max_y + k), _CMP_LE_OQ));
         // Only the lanes of this row's boxes.
-        const __m256i left = _mm256_set1_epi64x(static_cast<long long>(stop) - k);
+        const __m256i left = _mm256_set1_epi64x(stop - k);
         in = _mm256_and_pd(in, _mm256_castsi256_pd(_mm256_cmpgt_epi64(left, lane)));
         const unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(in));
         const __m256i slots = _mm256_cvtepi8_epi32(
