@@ -131,10 +131,11 @@ struct FewIds {
       const std::int64_t stop = end[row];
       // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
       do {
-        // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found.
-        __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(min_x + k), qmax_x, _CMP_LE_OQ),
+        // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found. The
+        // query comes first in each, so that every box load folds into its comparison.
+        __m256d in = _mm256_and_pd(_mm256_cmp_pd(qmax_x, _mm256_loadu_pd(min_x + k), _CMP_GE_OQ),
                                    _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(max_x + k), _CMP_LE_OQ));
-        in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(min_y + k), qmax_y, _CMP_LE_OQ));
+        in = _mm256_and_pd(in, _mm256_cmp_pd(qmax_y, _mm256_loadu_pd(min_y + k), _CMP_GE_OQ));
         in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(max_y + k), _CMP_LE_OQ));
         // Only the lanes of this row's boxes.
         const __m256i left = _mm256_set1_epi64x(stop - k);
@@ -186,10 +187,11 @@ void scanLevelsAvx2(const LevelArrays* levels, std::size_t level_count, const Qu
   const __m256d qmax_x = _mm256_set1_pd(q.max[0]), qmax_y = _mm256_set1_pd(q.max[1]);
   const auto step4 = [&](const Boxes& a, std::uint32_t k, std::uint32_t end, std::uint32_t* buffer,
                          std::size_t count) {
-    // Closed intervals: touching counts. Ordered comparisons, so a NaN box is never found.
-    __m256d in = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(a.min_x + k), qmax_x, _CMP_LE_OQ),
+    // Closed intervals: touching counts. Ordered comparisons, so a NaN box is never found. The
+    // query comes first in each, so that every box load folds into its comparison.
+    __m256d in = _mm256_and_pd(_mm256_cmp_pd(qmax_x, _mm256_loadu_pd(a.min_x + k), _CMP_GE_OQ),
                                _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(a.max_x + k), _CMP_LE_OQ));
-    in = _mm256_and_pd(in, _mm256_cmp_pd(_mm256_loadu_pd(a.min_y + k), qmax_y, _CMP_LE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(qmax_y, _mm256_loadu_pd(a.min_y + k), _CMP_GE_OQ));
     in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(a.max_y + k), _CMP_LE_OQ));
     const std::uint32_t left = end - k;
     const unsigned bits =
