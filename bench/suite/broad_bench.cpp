@@ -45,16 +45,17 @@ const Lot& lot(bool random, std::size_t n) {
 }
 
 // The path through the lot, as the game's car queries it.
-const std::vector<Aabb2>& pathQueries(bool random, std::size_t n) {
+const std::vector<Aabb2>& pathOf(bool random, std::size_t n) {
   return lot(random, n).path;
 }
 
-const std::vector<Aabb2>& scatteredQueries(bool random, std::size_t n) {
+// kScatteredQueries boxes spread over the lot (bench_data's scatteredQueries), made once.
+const std::vector<Aabb2>& scatteredOf(bool random, std::size_t n) {
   static std::map<std::pair<bool, std::size_t>, std::unique_ptr<std::vector<Aabb2>>> cache;
   auto& slot = cache[{random, n}];
   if (!slot) {
     slot = std::make_unique<std::vector<Aabb2>>(
-        cardemo::bench::scatteredQueries(lot(random, n).boxes, kScatteredQueries));
+        scatteredQueries(lot(random, n).boxes, kScatteredQueries));
   }
   return *slot;
 }
@@ -222,7 +223,7 @@ void registerLayout(bool random, std::size_t n) {
                             static_cast<std::int64_t>(n));
         s.counters["bytes_per_car"] = static_cast<double>(bytes) / static_cast<double>(n);
       });
-  registerQueries("broad/query/" + prefix, random, n, &pathQueries);
+  registerQueries("broad/query/" + prefix, random, n, &pathOf);
 #if defined(CARDEMO_HAVE_COMPARE)
   benchmark::RegisterBenchmark(
       ("broad/build/" + prefix + "box2d").c_str(), [random, n](benchmark::State& s) {
@@ -255,7 +256,7 @@ void registerBroad(const BenchConfig& config) {
       const std::size_t n = sizes.back();
       registerQueries(
           "broad/scattered/" + std::string(random ? "random/" : "lot/") + sizeLabel(n) + "/",
-          random, n, &scatteredQueries);
+          random, n, &scatteredOf);
     }
   }
 }

@@ -267,7 +267,7 @@ void UniformGrid::refreshViews() {
 std::size_t UniformGrid::queryFew(const Aabb2& query, std::uint32_t* few) const {
   // A handful of ids, found and sorted in registers (an empty grid has no levels, and a query off
   // every level's bounds or NaN finds nothing).
-  if (scan_few_ != nullptr && batchPath() != BatchPath::kPortable) {
+  if (scansFew()) {
     return scan_few_(views_.data(), level_count_, query.min.data(), query.max.data(), few);
   }
   return grid_detail::kFewIds + 1;

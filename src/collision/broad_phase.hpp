@@ -89,8 +89,7 @@ class UniformGrid {
   void query(const Aabb2& query, QueryIds& out) const {
     // Inline, so that the common case costs its caller one call (the scan) and no copy of the box.
     // A moved-from `out` has lost its storage: the crowded path restores it.
-    if (scan_few_ != nullptr && out.storage_.size() >= grid_detail::kFewIds &&
-        batchPath() != BatchPath::kPortable) [[likely]] {
+    if (out.storage_.size() >= grid_detail::kFewIds && scansFew()) [[likely]] {
       const std::size_t count = scan_few_(views_.data(), level_count_, query.min.data(),
                                           query.max.data(), out.storage_.data());
       if (count <= grid_detail::kFewIds) [[likely]] {
@@ -140,6 +139,11 @@ class UniformGrid {
   // order) and returns how many were found, or more than kFewIds when they did not fit (`few` is
   // then unspecified); none when the path does not apply (oversized items, or no AVX2).
   [[nodiscard]] std::size_t queryFew(const Aabb2& query, std::uint32_t* few) const;
+  // True when the few-ids scan applies: it is built, no item is oversized and the batch path is
+  // not the portable one.
+  [[nodiscard]] bool scansFew() const {
+    return scan_few_ != nullptr && batchPath() != BatchPath::kPortable;
+  }
   // query(QueryIds) when the few-ids scan does not apply or finds more than it keeps. Out of
   // line, so the inline common path stays small.
   void queryCrowded(const Aabb2& query, QueryIds& out) const;

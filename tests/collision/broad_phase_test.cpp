@@ -208,11 +208,12 @@ TEST(BroadPhase, GridMatchesBruteForceOnSeededScenes) {
     for (std::uint64_t seed = 1; seed <= (n >= 100000 ? 2u : 8u); ++seed) {
       std::mt19937_64 rng(seed * 7919 + n);
       const std::vector<Aabb2> scene = randomScene(n, rng);
-      ASSERT_EQ(UniformGrid(scene).size(), n);
+      const UniformGrid grid(scene);
+      ASSERT_EQ(grid.size(), n);
       // Walls and posts beside the cars: several size classes, so the scans' loop over levels
       // runs (with no oversized item, also that of the few-ids scan).
       if (n >= 1000) {
-        EXPECT_GT(UniformGrid(scene).levelCount(), 2u) << "n=" << n;
+        EXPECT_GT(grid.levelCount(), 2u) << "n=" << n;
       }
       const BruteForceBroadPhase brute(scene);
       std::vector<Aabb2> queries;
