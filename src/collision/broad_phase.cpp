@@ -124,28 +124,49 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
 
   // Counting sort by the cell of the lower-left corner; members come in increasing id order, so
   // each cell's ids stay increasing.
-  const std::size_t cells = static_cast<std::size_t>(level.nx * level.ny);
-  level.cell_start.assign(cells + 1, 0);
+  const std::size_t nx = static_cast<std::size_t>(level.nx);
+  const std::size_t ny = static_cast<std::size_t>(level.ny);
   std::vector<std::uint32_t> cell_of(n);
+  std::vector<std::uint32_t> in_cell(nx * ny, 0);
   for (std::size_t k = 0; k < n; ++k) {
     const Aabb2& b = boxes[members[k]];
     const std::int64_t cx = cellOf(b.min.x(), level.bounds.min.x(), level.inv_cell, level.nx);
     const std::int64_t cy = cellOf(b.min.y(), level.bounds.min.y(), level.inv_cell, level.ny);
     cell_of[k] = static_cast<std::uint32_t>(cy * level.nx + cx);
-    ++level.cell_start[cell_of[k] + 1];
+    ++in_cell[cell_of[k]];
   }
-  for (std::size_t c = 0; c < cells; ++c) level.cell_start[c + 1] += level.cell_start[c];
-  // Struct of arrays, padded past the last box with one that overlaps nothing (the scans mask
-  // those lanes anyway).
-  constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  const std::size_t stored = n + grid_detail::kScanPadding;
-  level.min_x.assign(stored, kInfinity);
-  level.min_y.assign(stored, kInfinity);
-  level.max_x.assign(stored, -kInfinity);
-  level.max_y.assign(stored, -kInfinity);
+  // Row by row: each row's cell offsets and its end (nx + 1 entries), and after the boxes of each
+  // occupied row, kRowPadding boxes that nothing finds, so a scan step may read past a row's end
+  // without a mask.
+  level.cell_start.assign(ny * (nx + 1), 0);
+  level.row_bits.assign(ny / 64 + 2, 0);  // + a zero word past the last row's
+  std::size_t slots = 0;
+  for (std::size_t row = 0; row < ny; ++row) {
+    const std::size_t row_first = slots;
+    for (std::size_t c = 0; c < nx; ++c) {
+      level.cell_start[row * (nx + 1) + c] = static_cast<std::uint32_t>(slots);
+      slots += in_cell[row * nx + c];
+    }
+    level.cell_start[row * (nx + 1) + nx] = static_cast<std::uint32_t>(slots);
+    if (slots > row_first) {
+      level.row_bits[row / 64] |= std::uint64_t{1} << (row % 64);
+      slots += grid_detail::kRowPadding;
+    }
+  }
+  // Every slot index fits the 32-bit offsets.
+  assert(slots <= std::numeric_limits<std::uint32_t>::max());
+  // NaN boxes: every ordered comparison with them is false, whatever the query.
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t stored = slots;
+  level.min_x.assign(stored, kNaN);
+  level.min_y.assign(stored, kNaN);
+  level.max_x.assign(stored, kNaN);
+  level.max_y.assign(stored, kNaN);
   level.ids.assign(stored, 0);
-  level.row_bits.assign(static_cast<std::size_t>((level.ny + 63) / 64) + 1, 0);  // + a zero word
-  std::vector<std::uint32_t> cursor(level.cell_start.begin(), level.cell_start.end() - 1);
+  std::vector<std::uint32_t> cursor(nx * ny);
+  for (std::size_t cell = 0; cell < nx * ny; ++cell) {
+    cursor[cell] = level.cell_start[cell / nx * (nx + 1) + cell % nx];
+  }
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t slot = cursor[cell_of[k]]++;
     const Aabb2& b = boxes[members[k]];
@@ -154,8 +175,6 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
     level.max_x[slot] = b.max.x();
     level.max_y[slot] = b.max.y();
     level.ids[slot] = members[k];
-    const std::uint32_t row = cell_of[k] / static_cast<std::uint32_t>(level.nx);
-    level.row_bits[row / 64] |= std::uint64_t{1} << (row % 64);
   }
   return level;
 }
@@ -256,7 +275,7 @@ void UniformGrid::refreshViews() {
                       {l.reach.x(), l.reach.y()},
                       l.inv_cell,
                       {static_cast<double>(l.nx - 1), static_cast<double>(l.ny - 1)},
-                      l.nx});
+                      l.nx + 1});
   }
   level_count_ = views_.size();
 #if defined(CARDEMO_BATCH_AVX2)

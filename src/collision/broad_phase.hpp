@@ -110,10 +110,10 @@ class UniformGrid {
   [[nodiscard]] double cellSize(std::size_t k) const { return 1.0 / levels_[k].inv_cell; }
 
  private:
-  // One grid over the items of one size class, struct of arrays (grid_scan.hpp, LevelArrays): item
-  // k lies in the cell of its lower-left corner; cells are in row-major order, cell c holding
-  // [cell_start[c], cell_start[c+1]). The box arrays and ids hold kScanPadding entries past the
-  // last item, so a scan step may read a whole group of boxes.
+  // One grid over the items of one size class, struct of arrays laid out as grid_scan.hpp's
+  // LevelArrays describes (row_stride = nx + 1): item k lies in the cell of its lower-left corner;
+  // cells are in row-major order; each occupied row's items are followed by kRowPadding NaN boxes,
+  // so a scan step may read a whole group of boxes from anywhere in a row.
   struct Level {
     Aabb2 bounds;           // union of the level's boxes
     double inv_cell = 1.0;  // 1 / cell size, 1/m

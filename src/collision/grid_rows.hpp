@@ -107,10 +107,10 @@ template <std::uint32_t kWidth, class Step>
     const Boxes boxes{l.min_x, l.min_y, l.max_x, l.max_y, l.ids};
     const std::uint32_t* const cell_start = l.cell_start;
     const std::uint64_t* const row_bits = l.row_bits;
-    const std::int64_t nx = l.nx;
+    const std::int64_t row_stride = l.row_stride;
     for (std::int64_t base = w.y0; base <= w.y1; base += 64) {
       for (std::uint64_t rows = occupiedRows(row_bits, base, w.y1); rows != 0; rows &= rows - 1) {
-        const std::int64_t first_cell = (base + __builtin_ctzll(rows)) * nx;
+        const std::int64_t first_cell = (base + __builtin_ctzll(rows)) * row_stride;
         std::uint32_t k = cell_start[first_cell + w.x0];
         const std::uint32_t end = cell_start[first_cell + w.x1 + 1];
         if (end - k + kScanStep <= capacity - count) [[likely]] {

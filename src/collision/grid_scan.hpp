@@ -24,25 +24,29 @@ struct IdSink {
 /// Largest number of slots one step of a scan writes (every slot, not only the hits).
 inline constexpr std::size_t kScanStep = 4;
 
-/// Entries past the last box of a level's arrays, so a step may read a whole group of boxes (a
-/// step may start at the end of the arrays, for an empty last row).
-inline constexpr std::size_t kScanPadding = kScanStep;
+/// Boxes that nothing finds (NaN) after the boxes of each occupied row of a level, so that a step
+/// may read a whole group of boxes from anywhere in the row, even from its end (an empty window),
+/// without masking the lanes past the row: those lanes hold the row's later boxes, which lie in
+/// cells right of the query's window and fail its x test, or these.
+inline constexpr std::size_t kRowPadding = kScanStep;
 
 /// One level of the grid as plain data, struct of arrays: box k is [min_x[k], max_x[k]] x
 /// [min_y[k], max_y[k]] in world metres, with item id ids[k]; boxes are grouped by the cell of
-/// their lower-left corner, cells in row-major order, cell c holding [cell_start[c],
-/// cell_start[c + 1]). Bit y % 64 of row_bits[y / 64] is set when row y holds a box; row_bits
-/// has one word (zero) past the last row's.
+/// their lower-left corner, cells in row-major order, each occupied row's boxes followed by
+/// kRowPadding NaN boxes. Cell x of row y holds [cell_start[y * row_stride + x], cell_start[y *
+/// row_stride + x + 1]); entry y * row_stride + nx is where row y's boxes end. Bit y % 64 of
+/// row_bits[y / 64] is set when row y holds a box; row_bits has one word (zero) past the last
+/// row's.
 struct LevelArrays {
   const double *min_x, *min_y, *max_x, *max_y;  ///< Box bounds, metres.
   const std::uint32_t* ids;                     ///< Item ids.
-  const std::uint32_t* cell_start;              ///< nx * ny + 1 offsets.
+  const std::uint32_t* cell_start;              ///< ny * row_stride offsets.
   const std::uint64_t* row_bits;                ///< Occupied rows.
   double bounds_min[2], bounds_max[2];          ///< Union of the level's boxes (x, y), metres.
   double reach[2];                              ///< Rounded-up largest box extent (x, y), metres.
   double inv_cell;                              ///< 1 / cell size, 1/m.
   double last_cell[2];                          ///< nx - 1 and ny - 1 (at most 2^30 - 1 each).
-  std::int64_t nx;                              ///< Cells per row.
+  std::int64_t row_stride;                      ///< Cells per row + 1 (cell_start entries a row).
 };
 
 /// A query box, closed, world metres.

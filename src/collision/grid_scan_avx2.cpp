@@ -108,14 +108,13 @@ struct FewIds {
 
   // Rows base .. min(base + 55, w.y1) of level l; false when they hold more ids than are kept.
   [[gnu::always_inline]] bool rows(const LevelArrays& l, const Window& w, std::int64_t base) {
-    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
     const double *const min_x = l.min_x, *const min_y = l.min_y;
     const double *const max_x = l.max_x, *const max_y = l.max_y;
     const std::uint32_t* const ids = l.ids;
-    const std::int64_t nx = l.nx;
-    // Row base + r holds the boxes [first[r * nx], end[r * nx]) of the window.
-    const std::uint32_t* const first = l.cell_start + base * nx + w.x0;
-    const std::uint32_t* const end = l.cell_start + base * nx + w.x1 + 1;
+    const std::int64_t row_stride = l.row_stride;
+    // Row base + r holds the boxes [first[r * row_stride], end[r * row_stride]) of the window.
+    const std::uint32_t* const first = l.cell_start + base * row_stride + w.x0;
+    const std::uint32_t* const end = l.cell_start + base * row_stride + w.x1 + 1;
     // Rows base .. base + 55 from one unaligned load (x86 is little-endian, so bit y of the bit
     // set is bit y % 8 of byte y / 8; the word past the last row's keeps the load inside).
     std::uint64_t occupied;
@@ -125,11 +124,11 @@ struct FewIds {
     const std::int64_t last = w.y1 - base;
     occupied &= (std::uint64_t{2} << (last < 55 ? last : 55)) - 1;
     for (; occupied != 0; occupied &= occupied - 1) {
-      const std::int64_t row = static_cast<unsigned>(__builtin_ctzll(occupied)) * nx;
+      const std::int64_t row = static_cast<unsigned>(__builtin_ctzll(occupied)) * row_stride;
       // 64-bit, so that indexing by k needs no widening each step.
       std::int64_t k = first[row];
       const std::int64_t stop = end[row];
-      // One step whatever the row holds (an empty row's lanes are all masked), as scanLevels.
+      // One step whatever the row holds (an empty window's lanes find nothing), as scanLevels.
       do {
         // Closed intervals: touching counts. Ordered comparisons: a NaN box is never found. The
         // query comes first in each, so that every box load folds into its comparison.
@@ -137,9 +136,8 @@ struct FewIds {
                                    _mm256_cmp_pd(qmin_x, _mm256_loadu_pd(max_x + k), _CMP_LE_OQ));
         in = _mm256_and_pd(in, _mm256_cmp_pd(qmax_y, _mm256_loadu_pd(min_y + k), _CMP_GE_OQ));
         in = _mm256_and_pd(in, _mm256_cmp_pd(qmin_y, _mm256_loadu_pd(max_y + k), _CMP_LE_OQ));
-        // Only the lanes of this row's boxes.
-        const __m256i left = _mm256_set1_epi64x(stop - k);
-        in = _mm256_and_pd(in, _mm256_castsi256_pd(_mm256_cmpgt_epi64(left, lane)));
+        // No mask for the lanes past `stop`: they hold boxes right of the window in this row, or
+        // the NaN boxes after it (kRowPadding), and none of them passes.
         const unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(in));
         const __m256i slots = _mm256_cvtepi8_epi32(
             _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&kFew.slot[0][bits][0] + at)));

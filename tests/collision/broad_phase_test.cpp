@@ -325,6 +325,37 @@ TEST(BroadPhase, EmptyAndFarQueriesReturnNothing) {
   }
 }
 
+// A scan step reads past the end of a row's boxes into the padding after it; an infinite query
+// (which an infinite padding box would pass) must still find each box once.
+TEST(BroadPhase, InfiniteQueriesFindEachBoxOnce) {
+  testing::BatchPathGuard guard;
+  const double inf = std::numeric_limits<double>::infinity();
+  // Eight boxes or fewer (the few-ids scan) and more, over several rows of cells.
+  for (const std::size_t n : {1u, 3u, 8u, 9u, 40u}) {
+    std::vector<Aabb2> scene;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = static_cast<double>(i % 3) * 7.0, y = static_cast<double>(i / 3) * 9.0;
+      scene.push_back(box(x, y, x + 4.5, y + 1.8));
+    }
+    const UniformGrid grid(scene);
+    std::vector<std::uint32_t> expected(n);
+    for (std::size_t i = 0; i < n; ++i) expected[i] = static_cast<std::uint32_t>(i);
+    for (const BatchPath path : testing::availableBatchPaths()) {
+      setBatchPath(path);
+      SCOPED_TRACE(std::string(batchPathName(path)) + ", " + std::to_string(n) + " boxes");
+      for (const Aabb2& query :
+           {box(-inf, -inf, inf, inf), box(-inf, -1, inf, 1e9), box(-1, -inf, 1e9, inf)}) {
+        std::vector<std::uint32_t> out;
+        grid.query(query, out);
+        EXPECT_EQ(out, expected);
+        QueryIds ids;
+        grid.query(query, ids);
+        EXPECT_EQ(std::vector<std::uint32_t>(ids.begin(), ids.end()), expected);
+      }
+    }
+  }
+}
+
 TEST(BroadPhase, HugeCoordinatesDoNotOverflowCellIndices) {
   const double big = 1e300;
   const std::vector<Aabb2> scene{box(-big, -big, -big + 1e290, -big + 1e290), box(0, 0, 1, 1),
