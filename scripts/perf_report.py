@@ -11,7 +11,10 @@ docs/perf/machine.md and docs/perf/bench.json, and replaces the region between
 Then runs every cardemo_tradeoff_* study into docs/perf/*.csv and draws its plot
 (`scripts/plot_tradeoffs.py BUILD --run`).
 Times are CPU time per item (the machine is shared; wall time is noisier), the minimum over the
-repetitions (a burst of load from other processes raises a sample, not the minimum).
+repetitions (a burst of load from other processes raises a sample, not the minimum), and their
+median. With --processes P the repetitions are shared among P processes run one after the other:
+where the code is loaded (randomised per process) moves some rows by up to half their time
+(docs/perf/history.md), so one process is one draw of that.
 """
 import argparse
 import csv
@@ -45,19 +48,36 @@ def build(build_dir):
     run(["cmake", "--build", str(build_dir), "--target", *targets, "-j2"])
 
 
-def run_bench(build_dir, quick, repetitions, bench_filter, out_json):
-    cmd = [str(build_dir / "bench" / "cardemo_bench"), "--benchmark_format=json",
-           f"--benchmark_out={out_json}", "--benchmark_out_format=json"]
-    if quick:
-        cmd += ["--smoke", "--benchmark_min_time=0.001"]
-    else:
-        # Repetitions interleaved at random across the run: a burst of load from other processes
-        # then slows one sample of many benchmarks, not every sample of a few.
-        cmd += [f"--benchmark_repetitions={repetitions}", "--benchmark_min_time=0.2",
-                "--benchmark_enable_random_interleaving=true"]
-    if bench_filter:
-        cmd.append(f"--benchmark_filter={bench_filter}")
-    run(cmd, stdout=subprocess.DEVNULL)
+def run_bench(build_dir, quick, repetitions, bench_filter, out_json, processes=1):
+    """Runs the suite in `processes` processes, one after the other, sharing the repetitions, and
+    writes their runs to `out_json` as one Google Benchmark JSON (the first process's context)."""
+    processes = 1 if quick else max(1, min(processes, repetitions))
+    merged = None
+    for p in range(processes):
+        part = out_json.with_suffix(f".part{p}.json")
+        cmd = [str(build_dir / "bench" / "cardemo_bench"), "--benchmark_format=json",
+               f"--benchmark_out={part}", "--benchmark_out_format=json"]
+        if quick:
+            cmd += ["--smoke", "--benchmark_min_time=0.001"]
+        else:
+            # Repetitions interleaved at random across the run: a burst of load from other
+            # processes then slows one sample of many benchmarks, not every sample of a few.
+            share = repetitions // processes + (1 if p < repetitions % processes else 0)
+            cmd += [f"--benchmark_repetitions={share}", "--benchmark_min_time=0.2",
+                    "--benchmark_enable_random_interleaving=true"]
+        if bench_filter:
+            cmd.append(f"--benchmark_filter={bench_filter}")
+        run(cmd, stdout=subprocess.DEVNULL)
+        data = json.loads(part.read_text())
+        part.unlink()
+        if merged is None:
+            merged = data
+            merged.setdefault("context", {})["processes"] = processes
+        else:
+            merged["benchmarks"] += data["benchmarks"]
+    tmp = out_json.with_suffix(".tmp")
+    tmp.write_text(json.dumps(merged, indent=2) + "\n")
+    tmp.replace(out_json)
 
 
 class Results:
@@ -488,7 +508,7 @@ def machine_text(r):
         f"- CPU: {model or platform.processor()}, {ctx.get('num_cpus', '?')} cores at "
         f"{ctx.get('mhz_per_cpu', '?')} MHz (as reported)" + (f", caches: {caches}" if caches else ""),
         f"- Load average at the start of the run: {load_average(ctx)} (the machine is "
-        f"shared; times are CPU time, the fastest of the repetitions)",
+        f"shared; times are CPU time, the fastest of the repetitions{processes_text(ctx)})",
         f"- Build (from the benchmark's context): {ctx.get('compiler', '?')}, "
         f"{ctx.get('build_type', '?')}, `{ctx.get('cxx_flags', '?')}`; the AVX2 batch files "
         f"alone add `-mavx2 -mfma`, the AVX-512 one `-mavx512f`",
@@ -510,7 +530,13 @@ def run_line(r):
             f"{ctx.get('compiler', '?')} {ctx.get('build_type', '?')} `{ctx.get('cxx_flags', '?')}` "
             f"(from the benchmark's context); batch path {ctx.get('batch_path', '?')}, AVX-512 "
             f"available: {ctx.get('avx512_available', '?')}; CPU time, the fastest of the "
-            f"repetitions.")
+            f"repetitions{processes_text(ctx)}.")
+
+
+def processes_text(ctx):
+    """How many processes shared the repetitions, when more than one."""
+    n = ctx.get("processes", 1)
+    return f" (shared among {n} processes)" if isinstance(n, int) and n > 1 else ""
 
 
 def replace_sections(r, only):
@@ -584,6 +610,8 @@ def main():
     ap.add_argument("--no-build", action="store_true", help="use the build folder as it is")
     ap.add_argument("--quick", action="store_true", help="smoke sizes, one repetition")
     ap.add_argument("--repetitions", type=int, default=3)
+    ap.add_argument("--processes", type=int, default=1,
+                    help="share the repetitions among this many processes, one after the other")
     ap.add_argument("--filter", default="", help="Google Benchmark filter (regex)")
     ap.add_argument("--json", help="make the tables from this JSON instead of running")
     ap.add_argument("--no-tradeoffs", action="store_true", help="skip the tradeoff studies")
@@ -598,7 +626,7 @@ def main():
             build(build_dir)
         PERF.mkdir(parents=True, exist_ok=True)
         out = PERF / "bench.json"
-        run_bench(build_dir, args.quick, args.repetitions, args.filter, out)
+        run_bench(build_dir, args.quick, args.repetitions, args.filter, out, args.processes)
         data = json.loads(out.read_text())
     if args.only:
         replace_sections(Results(data), args.only.split(","))
