@@ -12,9 +12,9 @@ Then runs every cardemo_tradeoff_* study into docs/perf/*.csv and draws its plot
 (`scripts/plot_tradeoffs.py BUILD --run`).
 Times are CPU time per item (the machine is shared; wall time is noisier), the minimum over the
 repetitions (a burst of load from other processes raises a sample, not the minimum), and their
-median. With --processes P the repetitions are shared among P processes run one after the other:
-where the code is loaded (randomised per process) moves some rows by up to half their time
-(docs/perf/history.md), so one process is one draw of that.
+median. With --processes P the repetitions are shared among P processes run one after the other,
+so that no row's samples all come from one process (its core, its memory placement): on this VM a
+core can run a row half again slower for minutes at a time (docs/perf/history.md).
 """
 import argparse
 import csv
