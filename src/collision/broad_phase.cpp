@@ -139,7 +139,7 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
   // occupied row, kRowPadding boxes that nothing finds, so a scan step may read past a row's end
   // without a mask.
   level.cell_start.assign(ny * (nx + 1), 0);
-  level.row_bits.assign(ny / 64 + 2, 0);  // + a zero word past the last row's
+  level.row_bits.assign((ny + 63) / 64 + 1, 0);  // + a zero word past the last row's
   std::size_t slots = 0;
   for (std::size_t row = 0; row < ny; ++row) {
     const std::size_t row_first = slots;
