@@ -181,7 +181,9 @@ void registerQueries(const std::string& group, bool random, std::size_t n, Queri
         s.counters["candidates"] = static_cast<double>(found) /
                                    static_cast<double>(std::max<std::int64_t>(1, s.iterations()));
         s.counters["bytes_per_car"] = static_cast<double>(g.memoryBytes()) / static_cast<double>(n);
-        s.counters["cell_m"] = g.levelCount() > 0 ? g.cellSize(0) : 0.0;
+        // The base level's cell width and height (the build picks their shape, grid_cells.hpp).
+        s.counters["cell_m"] = g.levelCount() > 0 ? g.cellSize(0).x() : 0.0;
+        s.counters["cell_height_m"] = g.levelCount() > 0 ? g.cellSize(0).y() : 0.0;
       });
 #if defined(CARDEMO_HAVE_COMPARE)
   benchmark::RegisterBenchmark(

@@ -8,6 +8,7 @@
 #include <limits>
 #include <utility>
 
+#include "collision/grid_cells.hpp"
 #include "geometry/batch_path.hpp"
 
 namespace cardemo {
@@ -22,25 +23,6 @@ constexpr double kLevelRatio = 4.0;
 // Cell side as a share of the side of the average area per box: about two cells per box. Finer
 // cells scan fewer boxes that cannot overlap; each costs 4 bytes.
 constexpr double kCellScale = 0.7;
-
-// Cell index of coordinate `x` on one axis. The index is clamped while still a double, so a huge,
-// far-off (or NaN) coordinate can never overflow the integer conversion. The map is monotone
-// non-decreasing in x, which is all the query's correctness argument needs.
-std::int64_t cellOf(double x, double origin, double inv_cell, std::int64_t n) {
-  // max(0, NaN) is 0 as std::max is written, so NaN lands in cell 0 too. Branch-free.
-  const double t = std::min(std::max(0.0, (x - origin) * inv_cell), static_cast<double>(n - 1));
-  // t is in [0, n-1] here, so truncation is floor (and needs no libm call on baseline x86-64).
-  return static_cast<std::int64_t>(t);
-}
-
-// At most 2^30 cells along an axis, so a cell index fits the 32-bit lanes of the query's packed
-// conversion (and any row's first cell index fits 64 bits).
-constexpr double kMaxCellsPerAxis = 0x1p30;
-
-// Number of cells of size `cell` needed to cover a width `w` (as a double: it may be astronomic).
-double cellsAcross(double w, double cell) {
-  return std::floor(w / cell) + 1.0;
-}
 
 double finiteWidth(double w) {
   return std::isfinite(w) ? w : std::numeric_limits<double>::max();
@@ -113,28 +95,16 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
     const double span = std::max(wx, wy);
     cell = span > 0.0 ? span / static_cast<double>(n) : 1.0;
   }
-  const double max_cells = 4.0 * static_cast<double>(n) + 16.0;
-  while (cellsAcross(wx, cell) * cellsAcross(wy, cell) > max_cells ||
-         std::max(cellsAcross(wx, cell), cellsAcross(wy, cell)) > kMaxCellsPerAxis) {
-    cell *= 2.0;
-  }
-  level.nx = static_cast<std::int64_t>(cellsAcross(wx, cell));
-  level.ny = static_cast<std::int64_t>(cellsAcross(wy, cell));
-  level.inv_cell = 1.0 / cell;
-
-  // Counting sort by the cell of the lower-left corner; members come in increasing id order, so
-  // each cell's ids stay increasing.
+  // The shape of cells whose scans cost least (grid_cells.hpp), and each member's cell.
+  const grid_detail::CellCounts best =
+      grid_detail::cheapestCells(boxes, members, level.bounds, {wx, wy}, level.reach, cell);
+  level.nx = best.nx;
+  level.ny = best.ny;
+  level.inv_cell = best.inv_cell;
   const std::size_t nx = static_cast<std::size_t>(level.nx);
   const std::size_t ny = static_cast<std::size_t>(level.ny);
-  std::vector<std::uint32_t> cell_of(n);
-  std::vector<std::uint32_t> in_cell(nx * ny, 0);
-  for (std::size_t k = 0; k < n; ++k) {
-    const Aabb2& b = boxes[members[k]];
-    const std::int64_t cx = cellOf(b.min.x(), level.bounds.min.x(), level.inv_cell, level.nx);
-    const std::int64_t cy = cellOf(b.min.y(), level.bounds.min.y(), level.inv_cell, level.ny);
-    cell_of[k] = static_cast<std::uint32_t>(cy * level.nx + cx);
-    ++in_cell[cell_of[k]];
-  }
+  const std::vector<std::uint32_t>& cell_of = best.cell_of;
+  const std::vector<std::uint32_t>& in_cell = best.in_cell;
   // Row by row: each row's cell offsets and its end (nx + 1 entries), and after the boxes of each
   // occupied row, kRowPadding boxes that nothing finds, so a scan step may read past a row's end
   // without a mask.
@@ -273,7 +243,7 @@ void UniformGrid::refreshViews() {
                       {l.bounds.min.x(), l.bounds.min.y()},
                       {l.bounds.max.x(), l.bounds.max.y()},
                       {l.reach.x(), l.reach.y()},
-                      l.inv_cell,
+                      {l.inv_cell.x(), l.inv_cell.y()},
                       {static_cast<double>(l.nx - 1), static_cast<double>(l.ny - 1)},
                       l.nx + 1});
   }

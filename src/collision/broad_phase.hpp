@@ -106,8 +106,10 @@ class UniformGrid {
   [[nodiscard]] std::size_t memoryBytes() const;
   /// Number of size classes in use (1 for a lot of similar cars), not counting oversized items.
   [[nodiscard]] std::size_t levelCount() const { return levels_.size(); }
-  /// Side of the cells of level `k` (k < levelCount()), metres.
-  [[nodiscard]] double cellSize(std::size_t k) const { return 1.0 / levels_[k].inv_cell; }
+  /// Width (x) and height (y) of the cells of level `k` (k < levelCount()), metres.
+  [[nodiscard]] Eigen::Vector2d cellSize(std::size_t k) const {
+    return levels_[k].inv_cell.cwiseInverse();
+  }
 
  private:
   // One grid over the items of one size class, struct of arrays laid out as grid_scan.hpp's
@@ -115,9 +117,9 @@ class UniformGrid {
   // cells are in row-major order; each occupied row's items are followed by kRowPadding NaN boxes,
   // so a scan step may read a whole group of boxes from anywhere in a row.
   struct Level {
-    Aabb2 bounds;           // union of the level's boxes
-    double inv_cell = 1.0;  // 1 / cell size, 1/m
-    Eigen::Vector2d reach;  // rounded-up largest box extent along x and y, metres
+    Aabb2 bounds;                        // union of the level's boxes
+    Eigen::Vector2d inv_cell{1.0, 1.0};  // 1 / cell width and height, 1/m
+    Eigen::Vector2d reach;               // rounded-up largest box extent along x and y, metres
     std::int64_t nx = 0, ny = 0;
     std::vector<std::uint32_t> cell_start;
     std::vector<double> min_x, min_y, max_x, max_y;

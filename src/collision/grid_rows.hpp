@@ -39,7 +39,7 @@ struct Window {
                                               const double* q_max) {
 #if defined(__SSE2__)
   // Both axes at once; max(t, 0) returns its second operand (0) for NaN, as cellIndex does.
-  const __m128d origin = _mm_loadu_pd(l.bounds_min), inv = _mm_set1_pd(l.inv_cell);
+  const __m128d origin = _mm_loadu_pd(l.bounds_min), inv = _mm_loadu_pd(l.inv_cell);
   const __m128d last = _mm_loadu_pd(l.last_cell), zero = _mm_setzero_pd();
   const __m128d low = _mm_sub_pd(_mm_loadu_pd(q_min), _mm_loadu_pd(l.reach));
   const __m128d lo = _mm_min_pd(_mm_max_pd(_mm_mul_pd(_mm_sub_pd(low, origin), inv), zero), last);
@@ -51,10 +51,10 @@ struct Window {
           _mm_cvtsi128_si32(_mm_shuffle_epi32(lo_cells, 1)),
           _mm_cvtsi128_si32(_mm_shuffle_epi32(hi_cells, 1))};
 #else
-  return {cellIndex(q_min[0] - l.reach[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
-          cellIndex(q_max[0], l.bounds_min[0], l.inv_cell, l.last_cell[0]),
-          cellIndex(q_min[1] - l.reach[1], l.bounds_min[1], l.inv_cell, l.last_cell[1]),
-          cellIndex(q_max[1], l.bounds_min[1], l.inv_cell, l.last_cell[1])};
+  return {cellIndex(q_min[0] - l.reach[0], l.bounds_min[0], l.inv_cell[0], l.last_cell[0]),
+          cellIndex(q_max[0], l.bounds_min[0], l.inv_cell[0], l.last_cell[0]),
+          cellIndex(q_min[1] - l.reach[1], l.bounds_min[1], l.inv_cell[1], l.last_cell[1]),
+          cellIndex(q_max[1], l.bounds_min[1], l.inv_cell[1], l.last_cell[1])};
 #endif
 }
 

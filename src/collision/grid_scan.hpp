@@ -44,7 +44,7 @@ struct LevelArrays {
   const std::uint64_t* row_bits;                ///< Occupied rows.
   double bounds_min[2], bounds_max[2];          ///< Union of the level's boxes (x, y), metres.
   double reach[2];                              ///< Rounded-up largest box extent (x, y), metres.
-  double inv_cell;                              ///< 1 / cell size, 1/m.
+  double inv_cell[2];                           ///< 1 / cell width and height, 1/m.
   double last_cell[2];                          ///< nx - 1 and ny - 1 (at most 2^30 - 1 each).
   std::int64_t row_stride;                      ///< Cells per row + 1 (cell_start entries a row).
 };

@@ -255,9 +255,10 @@ TEST(BroadPhase, TallQueriesOverManyRowsOfOneLevelMatchBruteForce) {
   expectTwins(scene, queries, "tall");
 }
 
-TEST(BroadPhase, CellsAreNoSmallerThanTheBoxesMeanReach) {
+TEST(BroadPhase, CellsAreNoShorterThanTheBoxesMeanReach) {
   // 2,000 boxes of 5 m by 3 m on 100 m by 100 m: the density rule alone (0.7 times the root of
-  // the area per box) would give 1.6 m cells, smaller than the 4 m mean reach.
+  // the area per box) would give 1.6 m cells, smaller than the 4 m mean reach. The square side is
+  // the larger; a narrower shape keeps at least a quarter of it across and is taller.
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> pos(0.0, 100.0);
   std::vector<Aabb2> scene;
@@ -267,10 +268,48 @@ TEST(BroadPhase, CellsAreNoSmallerThanTheBoxesMeanReach) {
   }
   const UniformGrid grid(scene);
   ASSERT_EQ(grid.levelCount(), 1u);
-  EXPECT_GE(grid.cellSize(0), 4.0);
+  EXPECT_GE(grid.cellSize(0).y(), 4.0);
+  EXPECT_GE(grid.cellSize(0).x(), 1.0);
   std::vector<Aabb2> queries;
   for (int q = 0; q < 300; ++q) queries.push_back(randomQuery(scene, rng));
   expectTwins(scene, queries, "reach-sized cells");
+}
+
+// Cars at random places and headings, like the benchmark's random layout: about 14 m^2 each.
+std::vector<Aabb2> scatteredCars(std::size_t n, std::mt19937_64& rng) {
+  const double side = std::sqrt(14.0 * static_cast<double>(n));
+  std::uniform_real_distribution<double> pos(0.0, side), turn(0.0, 6.283185307179586);
+  std::vector<Aabb2> boxes;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d c{pos(rng), pos(rng)};
+    const double t = turn(rng);
+    const Eigen::Vector2d r{0.5 * (std::abs(std::cos(t)) * 4.5 + std::abs(std::sin(t)) * 1.8),
+                            0.5 * (std::abs(std::sin(t)) * 4.5 + std::abs(std::cos(t)) * 1.8)};
+    boxes.push_back({c - r, c + r});
+  }
+  return boxes;
+}
+
+TEST(BroadPhase, CellShapeFollowsTheLayout) {
+  // The build keeps the cell shape whose estimated scan cost is lowest: in rows of parked cars
+  // square cells (each row of cars falls in one or two rows of cells), among scattered cars
+  // narrower and taller ones (fewer rows a query, fewer boxes outside its window in each).
+  // Either way every query finds what brute force finds.
+  std::mt19937_64 rng(12);
+  const std::vector<Aabb2> lot = lotScene(50000, rng);
+  const std::vector<Aabb2> scattered = scatteredCars(50000, rng);
+  const UniformGrid lot_grid(lot), scattered_grid(scattered);
+  ASSERT_EQ(lot_grid.levelCount(), 1u);
+  ASSERT_EQ(scattered_grid.levelCount(), 1u);
+  EXPECT_EQ(lot_grid.cellSize(0).x(), lot_grid.cellSize(0).y());
+  EXPECT_LT(scattered_grid.cellSize(0).x(), 0.5 * scattered_grid.cellSize(0).y());
+  std::vector<Aabb2> lot_queries, scattered_queries;
+  for (int q = 0; q < 2000; ++q) {
+    lot_queries.push_back(randomQuery(lot, rng));
+    scattered_queries.push_back(randomQuery(scattered, rng));
+  }
+  expectTwins(lot, lot_queries, "lot, square cells");
+  expectTwins(scattered, scattered_queries, "scattered cars, narrow cells");
 }
 
 TEST(BroadPhase, TouchingBoxesCountAndResultsAreSortedUnique) {
