@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <utility>
 
@@ -26,7 +27,11 @@ struct CellShape {
 // Square first, so that it wins a tie. A query scans each row of its window as one run of boxes:
 // taller cells mean fewer rows, narrower ones fewer boxes left of the window in each row. Which
 // costs less depends on the layout (docs/perf/history.md, "Broad-phase query").
-constexpr CellShape kCellShapes[] = {{1.0, 1.0}, {0.5, 1.25}, {0.25, 1.5}};
+constexpr CellShape kCellShapes[] = {{1.0, 1.0}, {0.25, 1.5}};
+
+// Levels with fewer members keep square cells: there the estimate would cost more than the build
+// (a build of 1,000 cars took twice as long with it), and a query saves a few per cent at most.
+constexpr std::size_t kMinMembersToChoose = 32768;
 
 CellCounts countCells(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members,
                       const Aabb2& bounds, std::int64_t nx, std::int64_t ny,
@@ -46,46 +51,62 @@ CellCounts countCells(std::span<const Aabb2> boxes, std::span<const std::uint32_
 // Relative costs of a query's scan (callgrind, docs/perf/history.md): about 9 instructions for
 // each occupied row of its window and 18 for each step of four boxes (at least one a row).
 constexpr double kRowCost = 9.0, kStepCost = 18.0;
-// Queries sampled for the estimate: about this many of the level's boxes, evenly spaced.
-constexpr std::size_t kCostSamples = 1024;
+// Members placed in cells for the estimate: all up to this many, else an even subsample of about
+// this many, each standing for the members it skips.
+constexpr std::size_t kCountedMembers = 16384;
 
-// The summed scan cost of about kCostSamples queries the size of the level's boxes (a car among
-// parked cars), placed evenly over its bounds (finite widths `span`), as a moving car meets aisles
-// and rows in proportion to their area.
-double estimatedScanCost(const CellCounts& counts, std::span<const Aabb2> boxes,
+// Queries for the estimate.
+constexpr std::size_t kCostQueries = 1024;
+
+// One cell shape: nx by ny cells of 1 / inv_cell metres.
+struct CellGrid {
+  std::int64_t nx, ny;
+  Eigen::Vector2d inv_cell;
+};
+
+// The summed scan cost of kCostQueries queries the size of the level's boxes (a car among parked
+// cars), placed evenly over its bounds (finite widths `span`), as a moving car meets aisles and
+// rows in proportion to their area.
+double estimatedScanCost(const CellGrid& grid, std::span<const Aabb2> boxes,
                          std::span<const std::uint32_t> members, const Aabb2& bounds,
                          const Eigen::Vector2d& span, const Eigen::Vector2d& reach) {
-  const std::size_t nx = static_cast<std::size_t>(counts.nx);
-  const std::size_t ny = static_cast<std::size_t>(counts.ny);
-  // Members in cells [0, x) of each row: prefix[row * (nx + 1) + x].
+  const std::size_t n = members.size();
+  const std::size_t nx = static_cast<std::size_t>(grid.nx);
+  const std::size_t ny = static_cast<std::size_t>(grid.ny);
+  const auto cell = [&](double at, int axis, std::int64_t cells) {
+    return static_cast<std::size_t>(cellOf(at, bounds.min[axis], grid.inv_cell[axis], cells));
+  };
+  // Counted members in cells [0, x) of each row: prefix[row * (nx + 1) + x].
+  const std::size_t stride = std::max<std::size_t>(1, n / kCountedMembers);
   std::vector<std::uint32_t> prefix(ny * (nx + 1), 0);
-  for (std::size_t row = 0; row < ny; ++row) {
-    for (std::size_t x = 0; x < nx; ++x) {
-      prefix[row * (nx + 1) + x + 1] = prefix[row * (nx + 1) + x] + counts.in_cell[row * nx + x];
-    }
+  for (std::size_t k = 0; k < n; k += stride) {
+    const Aabb2& b = boxes[members[k]];
+    ++prefix[cell(b.min.y(), 1, grid.ny) * (nx + 1) + cell(b.min.x(), 0, grid.nx) + 1];
   }
-  // Sizes from members spread evenly through the level, places from the R2 sequence (M. Roberts,
-  // "The unreasonable effectiveness of quasirandom sequences", 2018): low discrepancy, no seed.
-  const std::size_t stride = std::max<std::size_t>(1, members.size() / kCostSamples);
-  double cost = 0.0;
-  for (std::size_t k = 0, i = 0; k < members.size(); k += stride, ++i) {
-    const Eigen::Vector2d half = 0.5 * boxes[members[k]].size();
-    const double u = std::fmod(0.5 + 0.7548776662466927 * static_cast<double>(i), 1.0);
-    const double v = std::fmod(0.5 + 0.5698402909980532 * static_cast<double>(i), 1.0);
+  for (std::size_t row = 0; row < ny; ++row) {
+    std::uint32_t* p = &prefix[row * (nx + 1)];
+    for (std::size_t x = 0; x < nx; ++x) p[x + 1] += p[x];
+  }
+  // Places from the R2 sequence (M. Roberts, "The unreasonable effectiveness of quasirandom
+  // sequences", 2018): low discrepancy, no seed; sizes from members spread through the level.
+  const std::size_t queries = kCostQueries;
+  double u = 0.5, v = 0.5, cost = 0.0;
+  for (std::size_t i = 0; i < queries; ++i) {
+    u += 0.7548776662466927;
+    v += 0.5698402909980532;
+    u -= u >= 1.0 ? 1.0 : 0.0;
+    v -= v >= 1.0 ? 1.0 : 0.0;
+    const Eigen::Vector2d half = 0.5 * boxes[members[i * n / queries]].size();
     const Eigen::Vector2d centre = bounds.min + Eigen::Vector2d(u * span.x(), v * span.y());
-    const Aabb2 q{centre - half, centre + half};
-    const auto cell = [&](double at, int axis, std::int64_t n) {
-      return static_cast<std::size_t>(cellOf(at, bounds.min[axis], counts.inv_cell[axis], n));
-    };
-    const std::size_t x0 = cell(q.min.x() - reach.x(), 0, counts.nx);
-    const std::size_t x1 = cell(q.max.x(), 0, counts.nx);
-    const std::size_t y0 = cell(q.min.y() - reach.y(), 1, counts.ny);
-    const std::size_t y1 = cell(q.max.y(), 1, counts.ny);
+    const std::size_t x0 = cell(centre.x() - half.x() - reach.x(), 0, grid.nx);
+    const std::size_t x1 = cell(centre.x() + half.x(), 0, grid.nx);
+    const std::size_t y0 = cell(centre.y() - half.y() - reach.y(), 1, grid.ny);
+    const std::size_t y1 = cell(centre.y() + half.y(), 1, grid.ny);
     for (std::size_t row = y0; row <= y1; ++row) {
       const std::uint32_t* p = &prefix[row * (nx + 1)];
       if (p[nx] == 0) continue;  // an empty row costs no step
-      const std::uint32_t in_window = p[x1 + 1] - p[x0];
-      cost += kRowCost + kStepCost * std::max<double>(1.0, std::ceil(in_window / 4.0));
+      const double in_window = static_cast<double>((p[x1 + 1] - p[x0]) * stride);
+      cost += kRowCost + kStepCost * std::max(1.0, std::ceil(in_window / 4.0));
     }
   }
   return cost;
@@ -106,9 +127,11 @@ CellCounts cheapestCells(std::span<const Aabb2> boxes, std::span<const std::uint
                          const Aabb2& bounds, const Eigen::Vector2d& span,
                          const Eigen::Vector2d& reach, double side) {
   const double max_cells = 4.0 * static_cast<double>(members.size()) + 16.0;
-  CellCounts best;
+  const std::size_t shapes = members.size() >= kMinMembersToChoose ? std::size(kCellShapes) : 1;
+  CellGrid best{};
   double best_cost = std::numeric_limits<double>::infinity();
-  for (const CellShape& shape : kCellShapes) {
+  for (std::size_t i = 0; i < shapes; ++i) {
+    const CellShape& shape = kCellShapes[i];
     double cell_x = side * shape.width, cell_y = side * shape.height;
     // A side near the smallest double (boxes of no extent) can underflow to 0; square cells stay.
     if (!(cell_x > 0.0) || !(cell_y > 0.0)) continue;
@@ -119,16 +142,17 @@ CellCounts cheapestCells(std::span<const Aabb2> boxes, std::span<const std::uint
       cell_x *= 2.0;
       cell_y *= 2.0;
     }
-    CellCounts counts = countCells(
-        boxes, members, bounds, static_cast<std::int64_t>(cellsAcross(span.x(), cell_x)),
-        static_cast<std::int64_t>(cellsAcross(span.y(), cell_y)), {1.0 / cell_x, 1.0 / cell_y});
-    const double cost = estimatedScanCost(counts, boxes, members, bounds, span, reach);
+    const CellGrid grid{static_cast<std::int64_t>(cellsAcross(span.x(), cell_x)),
+                        static_cast<std::int64_t>(cellsAcross(span.y(), cell_y)),
+                        {1.0 / cell_x, 1.0 / cell_y}};
+    const double cost =
+        shapes == 1 ? 0.0 : estimatedScanCost(grid, boxes, members, bounds, span, reach);
     if (cost < best_cost) {
       best_cost = cost;
-      best = std::move(counts);
+      best = grid;
     }
   }
-  return best;
+  return countCells(boxes, members, bounds, best.nx, best.ny, best.inv_cell);
 }
 
 }  // namespace cardemo::grid_detail

@@ -24,9 +24,9 @@ struct CellCounts {
 };
 
 /// The cells over `bounds` (whose finite widths are `span`) for the boxes `boxes[members[k]]`,
-/// whose extents are at most `reach`, in the shape among a few (square cells of side `side`, or
-/// narrower and taller ones of about the same area) whose estimated scan cost is lowest, with at
-/// most 4 * members + 16 cells and 2^30 along an axis (larger cells otherwise).
+/// whose extents are at most `reach`: square cells of side `side`, or, for a level of 32,768
+/// members or more, cells a quarter as wide and 1.5 times as tall when their estimated scan cost
+/// is lower; at most 4 * members + 16 cells and 2^30 along an axis (larger cells otherwise).
 CellCounts cheapestCells(std::span<const Aabb2> boxes, std::span<const std::uint32_t> members,
                          const Aabb2& bounds, const Eigen::Vector2d& span,
                          const Eigen::Vector2d& reach, double side);

@@ -291,7 +291,7 @@ std::vector<Aabb2> scatteredCars(std::size_t n, std::mt19937_64& rng) {
 }
 
 TEST(BroadPhase, CellShapeFollowsTheLayout) {
-  // The build keeps the cell shape whose estimated scan cost is lowest: in rows of parked cars
+  // A large level keeps the cell shape whose estimated scan cost is lowest: in rows of parked cars
   // square cells (each row of cars falls in one or two rows of cells), among scattered cars
   // narrower and taller ones (fewer rows a query, fewer boxes outside its window in each).
   // Either way every query finds what brute force finds.
@@ -303,6 +303,9 @@ TEST(BroadPhase, CellShapeFollowsTheLayout) {
   ASSERT_EQ(scattered_grid.levelCount(), 1u);
   EXPECT_EQ(lot_grid.cellSize(0).x(), lot_grid.cellSize(0).y());
   EXPECT_LT(scattered_grid.cellSize(0).x(), 0.5 * scattered_grid.cellSize(0).y());
+  // Below 32,768 boxes a level keeps square cells without estimating (its build stays cheap).
+  const UniformGrid few_scattered(scatteredCars(20000, rng));
+  EXPECT_EQ(few_scattered.cellSize(0).x(), few_scattered.cellSize(0).y());
   std::vector<Aabb2> lot_queries, scattered_queries;
   for (int q = 0; q < 2000; ++q) {
     lot_queries.push_back(randomQuery(lot, rng));
