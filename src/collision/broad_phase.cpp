@@ -96,7 +96,7 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
     cell = span > 0.0 ? span / static_cast<double>(n) : 1.0;
   }
   // The shape of cells whose scans cost least (grid_cells.hpp), and each member's cell.
-  const grid_detail::CellCounts best =
+  grid_detail::CellCounts best =
       grid_detail::cheapestCells(boxes, members, level.bounds, {wx, wy}, level.reach, cell);
   level.nx = best.nx;
   level.ny = best.ny;
@@ -104,7 +104,8 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
   const std::size_t nx = static_cast<std::size_t>(level.nx);
   const std::size_t ny = static_cast<std::size_t>(level.ny);
   const std::vector<std::uint32_t>& cell_of = best.cell_of;
-  const std::vector<std::uint32_t>& in_cell = best.in_cell;
+  // Each cell's count becomes its cursor: the slot its next member goes to.
+  std::vector<std::uint32_t>& cursor = best.in_cell;
   // Row by row: each row's cell offsets and its end (nx + 1 entries), and after the boxes of each
   // occupied row, kRowPadding boxes that nothing finds, so a scan step may read past a row's end
   // without a mask.
@@ -115,7 +116,9 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
     const std::size_t row_first = slots;
     for (std::size_t c = 0; c < nx; ++c) {
       level.cell_start[row * (nx + 1) + c] = static_cast<std::uint32_t>(slots);
-      slots += in_cell[row * nx + c];
+      const std::uint32_t in_cell = cursor[row * nx + c];
+      cursor[row * nx + c] = static_cast<std::uint32_t>(slots);
+      slots += in_cell;
     }
     level.cell_start[row * (nx + 1) + nx] = static_cast<std::uint32_t>(slots);
     if (slots > row_first) {
@@ -133,10 +136,6 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
   level.max_x.assign(stored, kNaN);
   level.max_y.assign(stored, kNaN);
   level.ids.assign(stored, 0);
-  std::vector<std::uint32_t> cursor(nx * ny);
-  for (std::size_t cell = 0; cell < nx * ny; ++cell) {
-    cursor[cell] = level.cell_start[cell / nx * (nx + 1) + cell % nx];
-  }
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t slot = cursor[cell_of[k]]++;
     const Aabb2& b = boxes[members[k]];
