@@ -10,7 +10,7 @@ namespace cardemo {
 enum class BatchPath {
   kPortable,  ///< One pair at a time, plain C++: runs on any CPU.
   kAvx2,      ///< Four pairs at a time with AVX2 and FMA (x86-64 CPUs that have both).
-  kAvx512,    ///< AVX-512F for the 2D and 3D kernels (eight doubles, sixteen floats).
+  kAvx512,    ///< AVX-512F for the 2D and 3D kernels (eight doubles, sixteen floats); needs VL too.
 };
 
 /// True when `path` was built, the CPU can run it and CARDEMO_BATCH_PATH names no narrower path

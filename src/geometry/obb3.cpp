@@ -215,11 +215,12 @@ const double* numbersOf(const Obb3& box) {
                                 std::max(a.frameDefect(), b.frameDefect()));
 }
 
-// collideObb3's AVX2 kernel (obb3_avx2.cpp, largestGapAvx2) compares candidate separations
-// without roots (the batch kernels' Candidate, batch_kernels.hpp): gap / sqrt(length2) is carried
-// as gap, length2 and square = gap |gap|, and as z -> z|z| is increasing, y's separation is the
-// larger iff y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1. One root
-// and one division remain, for the winner only, which reports gap / sqrt(length2) as before.
+// collideObb3's AVX2 kernel (obb3_vector_kernels.hpp, largestGapAvx2) compares candidate
+// separations without roots (the batch kernels' Candidate, batch_kernels.hpp): gap / sqrt(length2)
+// is carried as gap, length2 and square = gap |gap|, and as z -> z|z| is increasing, y's separation
+// is the larger iff y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1.
+// One root and one division remain, for the winner only, which reports gap / sqrt(length2) as
+// before.
 //
 // Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
 // < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
@@ -504,15 +505,36 @@ namespace {
   return true;
 }
 
+#if defined(CARDEMO_BATCH_AVX2)
+// The vector kernels for a path other than the portable one: on kAvx512 their AVX-512VL build
+// (obb3_vector_kernels.hpp; the same bits).
+obb3_detail::Verdict overlapOnPath(BatchPath path, const double* a, const double* b, double phi) {
+#if defined(CARDEMO_BATCH_AVX512)
+  if (path == BatchPath::kAvx512) return obb3_detail::overlapAvx512(a, b, phi);
+#endif
+  (void)path;
+  return obb3_detail::overlapAvx2(a, b, phi);
+}
+
+bool largestGapOnPath(BatchPath path, const double* a, const double* b, double phi,
+                      obb3_detail::LargestGap& out) {
+#if defined(CARDEMO_BATCH_AVX512)
+  if (path == BatchPath::kAvx512) return obb3_detail::largestGapAvx512(a, b, phi, out);
+#endif
+  (void)path;
+  return obb3_detail::largestGapAvx2(a, b, phi, out);
+}
+#endif
+
 }  // namespace
 
 SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() != BatchPath::kPortable) {
+  if (const BatchPath path = batchPath(); path != BatchPath::kPortable) {
     obb3_detail::LargestGap largest;
-    if (obb3_detail::largestGapAvx2(numbersOf(a), numbersOf(b),
-                                    std::max(a.frameDefect(), b.frameDefect()), largest)) {
+    if (largestGapOnPath(path, numbersOf(a), numbersOf(b),
+                         std::max(a.frameDefect(), b.frameDefect()), largest)) {
       SatResult3 r;
       r.separation = largest.gap;
       r.axis_index = largest.axis;
@@ -531,9 +553,9 @@ SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
 bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() != BatchPath::kPortable) {
-    const obb3_detail::Verdict verdict = obb3_detail::overlapAvx2(
-        numbersOf(a), numbersOf(b), std::max(a.frameDefect(), b.frameDefect()));
+  if (const BatchPath path = batchPath(); path != BatchPath::kPortable) {
+    const obb3_detail::Verdict verdict =
+        overlapOnPath(path, numbersOf(a), numbersOf(b), std::max(a.frameDefect(), b.frameDefect()));
     if (verdict != obb3_detail::Verdict::kUndecided) {
       return verdict == obb3_detail::Verdict::kOverlapping;
     }

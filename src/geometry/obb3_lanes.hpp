@@ -49,6 +49,8 @@ struct EdgeBound {
 /// the filter for the larger frame defect `phi` (edgeBound); undecided otherwise. `a`
 /// and `b` hold BoxNumbers. Call only when geometry/batch_path says the CPU has AVX2.
 Verdict overlapAvx2(const double* a, const double* b, double phi);
+/// overlapAvx2 built with AVX-512VL: the same verdicts. Call only on the kAvx512 batch path.
+Verdict overlapAvx512(const double* a, const double* b, double phi);
 
 /// collideObb3's root-free comparison of two candidate separations (the AVX2 kernel's) is certain
 /// when its two products differ by more than this fraction of the first (obb3.cpp gives the
@@ -78,5 +80,7 @@ struct LargestGap {
 /// outside kRootFreeMinScale..kRootFreeMaxScale). False otherwise, with only the pose written. `a`
 /// and `b` hold BoxNumbers. Call only when geometry/batch_path says the CPU has AVX2.
 bool largestGapAvx2(const double* a, const double* b, double phi, LargestGap& out);
+/// largestGapAvx2 built with AVX-512VL: the same bits. Call only on the kAvx512 batch path.
+bool largestGapAvx512(const double* a, const double* b, double phi, LargestGap& out);
 
 }  // namespace cardemo::obb3_detail

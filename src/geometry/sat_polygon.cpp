@@ -4,8 +4,8 @@
 // box axis, so on inputs whose products are exact (a grid) every gap is exact too. Two axes are
 // measured at a time (simd::Double2), the axes are ordered without a root or a division by their
 // length per axis, and only the winner is normalised. Two quadrilaterals (boxes as polygons, the
-// commonest pair) take four axes a step where the CPU has AVX2 (sat_quads_avx2.cpp), bit for bit
-// the same answer.
+// commonest pair) take four axes a step where the CPU has AVX2 (sat_quads_vector_kernels.hpp), bit
+// for bit the same answer.
 
 #include <algorithm>
 #include <cassert>
@@ -437,7 +437,13 @@ sat_detail::WidestAxis normalised(const AxisGaps& w) {
 // Two quadrilaterals on the widest path the CPU has (both give the same bits).
 bool widestAxisOfQuads(PolygonView a, PolygonView b, sat_detail::WidestAxis& out) {
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() != BatchPath::kPortable) {
+  const BatchPath path = batchPath();
+#if defined(CARDEMO_BATCH_AVX512)
+  if (path == BatchPath::kAvx512) {
+    return sat_detail::widestAxisOfQuadsAvx512(a.vertex(0).data(), b.vertex(0).data(), out);
+  }
+#endif
+  if (path != BatchPath::kPortable) {
     return sat_detail::widestAxisOfQuadsAvx2(a.vertex(0).data(), b.vertex(0).data(), out);
   }
 #endif

@@ -27,5 +27,7 @@ struct WidestAxis {
 /// written, when the pair is outside the fast path's range. Call only when geometry/batch_path
 /// says the CPU has AVX2.
 bool widestAxisOfQuadsAvx2(const double* a, const double* b, WidestAxis& out);
+/// widestAxisOfQuadsAvx2 built with AVX-512VL: the same bits. Call only on the kAvx512 batch path.
+bool widestAxisOfQuadsAvx512(const double* a, const double* b, WidestAxis& out);
 
 }  // namespace cardemo::sat_detail
