@@ -492,6 +492,19 @@ def box2d_package():
             if version else "")
 
 
+def isa_flags_text(ctx):
+    """The instruction-set files and the flags each adds, grouped by flags, from the context."""
+    recorded = ctx.get("isa_flags")
+    if not recorded:
+        return "the instruction-set files' own flags are not in this run's context"
+    by_flags = {}
+    for entry in recorded.split(" | "):
+        name, flags = entry.split(": ", 1)
+        by_flags.setdefault(flags, []).append(f"`{name}`")
+    return "only these files add flags: " + "; ".join(
+        f"{', '.join(names)} `{flags}`" for flags, names in by_flags.items())
+
+
 def machine_text(r):
     ctx = r.context
     caches = ", ".join(f"L{c['level']} {c['type'][0].lower()} {c['size'] // 1024} KiB"
@@ -510,8 +523,7 @@ def machine_text(r):
         f"- Load average at the start of the run: {load_average(ctx)} (the machine is "
         f"shared; times are CPU time, the fastest of the repetitions{processes_text(ctx)})",
         f"- Build (from the benchmark's context): {ctx.get('compiler', '?')}, "
-        f"{ctx.get('build_type', '?')}, `{ctx.get('cxx_flags', '?')}`; the AVX2 batch files "
-        f"alone add `-mavx2 -mfma`, the AVX-512 one `-mavx512f`",
+        f"{ctx.get('build_type', '?')}, `{ctx.get('cxx_flags', '?')}`; {isa_flags_text(ctx)}",
         f"- Batch path used by default: {ctx.get('batch_path', '?')}; Box2D: b2_version "
         f"{ctx.get('box2d', '?')}{box2d_package()}",
         f"- Google Benchmark run at {ctx.get('date', '?')} on {ctx.get('host_name', '?')}",

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       "avx512_available", cardemo::batchPathAvailable(cardemo::BatchPath::kAvx512) ? "yes" : "no");
   benchmark::AddCustomContext("build_type", CARDEMO_BUILD_TYPE);
   benchmark::AddCustomContext("cxx_flags", CARDEMO_CXX_FLAGS);
+  benchmark::AddCustomContext("isa_flags", CARDEMO_ISA_FLAGS);
   benchmark::AddCustomContext("compiler", CARDEMO_COMPILER);
 #if defined(CARDEMO_HAVE_COMPARE)
   // b2_version is the linked library's own (b2_settings.cpp), not the header's.
