@@ -53,12 +53,17 @@ struct DrawOptions {
   const GoalView* goal = nullptr;
 };
 
+/// Obstacles at most this many metres across (their bounding box's longer side) are drawn as
+/// posts: painted, so that a bollard or pillar stands out from the kerbs and walls.
+inline constexpr double kPostMaxSize = 1.0;
+
 /// Colours of the scene (shared by the window, the PNGs and the render tests).
 struct Palette {
   Rgba ground{38, 41, 46};       ///< Asphalt.
   Rgba grid{52, 56, 62};         ///< Ground grid lines.
   Rgba wall{200, 200, 210};      ///< Walls from `bounds`.
   Rgba obstacle{150, 140, 120};  ///< Convex obstacles.
+  Rgba post{235, 185, 40};       ///< Obstacles at most kPostMaxSize across: posts, pillars.
   Rgba player{230, 60, 50};      ///< The player's car.
   Rgba windscreen{20, 24, 30};   ///< Windscreens (show a car's heading).
   Rgba outside{22, 24, 27};      ///< Ground beyond the walls (when the scene has bounds).

@@ -56,8 +56,22 @@ void drawObstacle(Canvas& canvas, const Camera& camera, const ConvexPolygon& pol
   for (int i = 0; i < poly.count; ++i)
     pts[static_cast<std::size_t>(i)] = camera.toScreen(poly.vertex(i));
   const std::span<const Eigen::Vector2f> span(pts.data(), static_cast<std::size_t>(poly.count));
-  canvas.fillConvex(span, palette.obstacle);
-  outline(canvas, span, 2.0f, shade(palette.obstacle, 0.7));
+  const Eigen::Vector2d extent = poly.aabb().max - poly.aabb().min;
+  if (extent.maxCoeff() > kPostMaxSize) {
+    canvas.fillConvex(span, palette.obstacle);
+    outline(canvas, span, 2.0f, shade(palette.obstacle, 0.7));
+    return;
+  }
+  // A post or pillar: small enough to miss at a glance, so painted, with a lighter cap.
+  canvas.fillConvex(span, palette.post);
+  outline(canvas, span, 2.0f, shade(palette.post, 0.45));
+  Eigen::Vector2f centre = Eigen::Vector2f::Zero();
+  for (const Eigen::Vector2f& p : span) centre += p;
+  centre /= static_cast<float>(span.size());
+  std::array<Eigen::Vector2f, ConvexPolygon::kMaxVertices> cap;
+  for (std::size_t i = 0; i < span.size(); ++i) cap[i] = centre + 0.5f * (span[i] - centre);
+  canvas.fillConvex(std::span<const Eigen::Vector2f>(cap.data(), span.size()),
+                    shade(palette.post, 1.2));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <set>
@@ -14,6 +15,7 @@
 #include "recording_canvas.hpp"
 #include "render/debug_overlay.hpp"
 #include "render/hud.hpp"
+#include "render/shapes.hpp"
 
 namespace cardemo {
 namespace {
@@ -174,6 +176,26 @@ TEST(DrawWorld, ObstaclesAndWallsAreDrawn) {
   EXPECT_EQ(canvas.fillsOf(Palette{}.wall).size(), 4u);
   EXPECT_EQ(canvas.cleared, Palette{}.outside);
   EXPECT_EQ(canvas.fillsOf(Palette{}.ground).size(), 1u);  // the lot inside the walls
+}
+
+// An obstacle at most kPostMaxSize across (a bollard, a pillar) is painted in the post colour with
+// a lighter cap; a larger one keeps the obstacle colour.
+TEST(DrawWorld, SmallObstaclesAreDrawnAsPosts) {
+  Scene scene = sceneWith({});
+  const std::array<Eigen::Vector2d, 4> post{
+      {{0, 0}, {kPostMaxSize, 0}, {kPostMaxSize, 0.5}, {0, 0.5}}};
+  const std::array<Eigen::Vector2d, 4> kerb{
+      {{3, 0}, {3 + 1.001 * kPostMaxSize, 0}, {3 + 1.001 * kPostMaxSize, 0.2}, {3, 0.2}}};
+  scene.obstacles.push_back({"bollard", *ConvexPolygon::fromPoints(post)});
+  scene.obstacles.push_back({"kerb", *ConvexPolygon::fromPoints(kerb)});
+  World world(std::move(scene));
+  Camera camera;
+  camera.viewport = kViewport;
+  const RecordingCanvas canvas = drawn(world, camera);
+  ASSERT_EQ(canvas.fillsOf(Palette{}.post).size(), 1u);
+  EXPECT_EQ(canvas.fillsOf(Palette{}.post)[0].points.size(), 4u);
+  EXPECT_EQ(canvas.fillsOf(shade(Palette{}.post, 1.2)).size(), 1u);  // the cap
+  EXPECT_EQ(canvas.fillsOf(Palette{}.obstacle).size(), 1u);          // the kerb
 }
 
 TEST(DrawWorld, DebugOverlayAddsGreenAabbAndRedObbs) {
