@@ -13,6 +13,7 @@ usage: scripts/make_levels.py CARDEMO_BINARY [LEVEL_NUMBER...]
 """
 import csv
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -79,7 +80,7 @@ def plan(steps, tail=60):
             sys.exit("make_levels: %s never meets its condition after %s" % (keys, fixed))
         fixed.append("%d %s" % (k, keys))
     fixed.append("%d ." % tail)
-    return fixed, run(EMPTY, fixed)[-1]
+    return fixed, run(EMPTY, fixed)
 
 def box(cx,cy,hx,hy):  # axis-aligned rectangle polygon, half extents
     return [[r(cx-hx),r(cy-hy)],[r(cx+hx),r(cy-hy)],[r(cx+hx),r(cy+hy)],[r(cx-hx),r(cy+hy)]]
@@ -112,12 +113,23 @@ def dump(obj):
     lines.append('}')
     return '\n'.join(lines)+'\n'
 
+def corners(rows, S):
+    """The player's corners (4.5 m by 1.8 m) in every frame of a manoeuvre started at S."""
+    out=[]
+    for row in rows:
+        x,y,h=S[0]+f(row,'x'),S[1]+f(row,'y'),math.radians(f(row,'heading_deg'))
+        c,s=math.cos(h),math.sin(h)
+        for u,v in ((2.25,0.9),(2.25,-0.9),(-2.25,0.9),(-2.25,-0.9)):
+            out.append((x+u*c-v*s,y+u*s+v*c))
+    return out
+
 def build(lv):
-    fx,end=plan(lv['steps'])
+    fx,rows=plan(lv['steps'])
+    end=rows[-1]
     D=(f(end,'x'),f(end,'y')); H=f(end,'heading_deg')
     B=lv['bay']
     S=(B[0]-D[0],B[1]-D[1])
-    sc=lv['make'](S,B)
+    sc=lv['make'](S,B,rows) if lv.get('uses_path') else lv['make'](S,B)
     path='%s/scenes/levels/%s.json'%(OUT,lv['file'])
     open(path,'w').write(dump(sc))
     rp='%s/replays/%s.replay'%(OUT,lv['file'])
@@ -207,6 +219,71 @@ def make4(S,B):
 LEVEL4={'file':'level-4-garage','bay':(0.0,0.0),'make':make4,'comment':'Level 4: follow the lane, turn in on full left lock, straighten on the centre line, stop short of the back wall.',
     'steps':[('U',60),('.',30),(('L',16),('UL',8),lambda r:f(r,'heading_deg')>87.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),(('.',16),('U',8),lambda r:f(r,'y')>8.9),('D',lambda r:f(r,'speed')<=0),('.',30)]}
 
+def bollard(cx,cy,radius=0.35):  # an octagon
+    return [[r(cx+radius*math.cos(math.pi*(k+0.5)/4)),r(cy+radius*math.sin(math.pi*(k+0.5)/4))] for k in range(8)]
+
+def make5(S,B,rows):
+    bx,by=B[0],B[1]
+    # The slalom's turning points: where the path's lateral offset peaks, before the bay's run-in.
+    path=[(S[0]+f(q,'x'),S[1]+f(q,'y')) for q in rows]
+    turns=[path[i] for i in range(1,len(path)-1)
+           if path[i][0]<bx-8 and path[i][0]>S[0]+4 and
+           (path[i][1]-path[i-1][1])*(path[i+1][1]-path[i][1])<0]
+    mid=(max(p[1] for p in turns)+min(p[1] for p in turns))/2
+    course=[c for c in corners(rows,S) if c[0]<bx-6]
+    top=max(c[1] for c in course)+0.7
+    bottom=min(c[1] for c in course)-0.7
+    obstacles=[{"id":"bollard-%d"%(k+1),"points":bollard(x,mid)} for k,(x,_) in enumerate(turns)]
+    obstacles+=[{"id":"kerb-north","points":box((S[0]-3+bx-5)/2,top+0.2,(bx-5-(S[0]-3))/2,0.2)},
+                {"id":"kerb-south","points":box((S[0]-3+bx-5)/2,bottom-0.2,(bx-5-(S[0]-3))/2,0.2)},
+                {"id":"back-wall","points":box(bx+3.55,by,0.2,8.0)}]
+    parked=[car('N1',bx,by+2.6,0),car('N2',bx,by+5.2,180),car('S1',bx,by-2.6,180),car('S2',bx,by-5.2,0)]
+    mk=[line((bx-2.75,by+y),(bx+2.75,by+y)) for y in (-6.5,-3.9,-1.3,1.3,3.9,6.5)]
+    mk.append(line((bx+2.75,by-6.5),(bx+2.75,by+6.5)))
+    mk.append(arrow((S[0]+3,S[1]),(S[0]+6,S[1])))
+    return scene('level-5-slalom',5,'Slalom',
+      'Weave between the bollards, left of the first, then brake into the bay at the end',
+      S,(bx,by,0,5.5,2.6),
+      {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
+      parked,obstacles,mk,[[r(S[0]-4),r(min(bottom,by)-8)],[bx+5,r(max(top,by)+8)]])
+LEVEL5={'file':'level-5-slalom','bay':(0.0,0.0),'make':make5,'uses_path':True,
+    'comment':'Level 5: accelerate, full left and right lock in turn past three bollards, straighten, brake in the bay.',
+    'steps':[('U',lambda q:f(q,'x')>1),('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
+             ('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
+             ('UL',lambda q:f(q,'heading_deg')>-7.5),('U',lambda q:abs(f(q,'steer_deg'))<0.01),
+             ('D',lambda q:f(q,'speed')<=0),('.',30)]}
+
+def make6(S,B,rows):
+    bx,by=B[0],B[1]
+    swept=corners(rows,S)
+    top=max(c[1] for c in swept)+0.45
+    bottom=min(c[1] for c in swept)-0.45
+    end=max(c[0] for c in swept)+0.45
+    mouth=bx-6
+    obstacles=[{"id":"kerb-north","points":box((mouth+end)/2,top+0.2,(end-mouth)/2,0.2)},
+               {"id":"kerb-south","points":box((mouth+end)/2,bottom-0.2,(end-mouth)/2,0.2)},
+               {"id":"dead-end","points":box(end+0.2,(top+bottom)/2,0.2,(top-bottom)/2+0.4)}]
+    # Parked along the north kerb, behind the start and clear of the box (the south side is the
+    # car's: its rear swings there as it turns in).
+    parked=[]
+    x=S[0]-1.5
+    while x-2.2>bx+3.2:
+        parked.append(car('N%d'%(len(parked)+1),x,top-1.05,180))
+        x-=5.2
+    mk=[line((mouth,by-1.4),(mouth,by+1.4),0.2),
+        arrow((S[0]+1,S[1]),(S[0]+5,S[1]))]
+    return scene('level-6-turn',6,'Three-point turn',
+      'Turn round in the dead end in three moves, then stop in the box at the street\'s mouth, facing out',
+      S,(bx,by,180,5.5,2.6),
+      {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":20,"time_limit":120},
+      parked,obstacles,mk,[[r(mouth-4),r(bottom-1)],[r(end+1),r(top+1)]])
+LEVEL6={'file':'level-6-turn','bay':(0.0,0.0),'make':make6,'uses_path':True,
+    'comment':'Level 6: forward on left lock to face the kerb, reverse on right lock, forward on left lock, straighten, drive out, stop.',
+    'steps':[('U',50),('.',10),(('L',16),('UL',8),lambda q:f(q,'heading_deg')>80),('D',lambda q:f(q,'speed')<=0),
+             ('DR',30),(('R',12),('DR',12),lambda q:f(q,'heading_deg')>150),('U',lambda q:f(q,'speed')>=0),
+             ('UL',30),(('L',12),('UL',12),lambda q:abs(f(q,'heading_deg'))>177),('.',lambda q:abs(f(q,'steer_deg'))<0.01),
+             ('U',lambda q:f(q,'x')<-10),('D',lambda q:f(q,'speed')<=0),('.',30)]}
+
 
 def main():
     global CARDEMO
@@ -221,7 +298,7 @@ def main():
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
-        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4):
+        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6):
             if ONLY and level["file"].split("-")[1] not in ONLY:
                 continue
             build(level)

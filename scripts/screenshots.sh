@@ -32,4 +32,5 @@ shot crash assets/replays/head-on.replay --frame 866 --rig --zoom 30 --sprites
 shot demo assets/replays/demo.replay --frame 330 --zoom 18 --rig
 shot demo-debug assets/replays/demo.replay --frame 1190 --zoom 24 --debug --rig
 shot garage assets/replays/garage.replay --frame 300 --zoom 26 --rig --sprites
+shot slalom assets/replays/level-5-slalom.replay --frame 420 --rig --sprites
 shot help assets/scenes/garage.json --zoom 26 --help-panel --rig

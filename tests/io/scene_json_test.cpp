@@ -159,8 +159,8 @@ TEST(SceneJson, BundledScenesParse) {
 
 TEST(SceneJson, BundledLevelsHaveAGoalAndAnOrder) {
   int order = 0;
-  for (const char* name :
-       {"level-1-straight", "level-2-reverse", "level-3-parallel", "level-4-garage"}) {
+  for (const char* name : {"level-1-straight", "level-2-reverse", "level-3-parallel",
+                           "level-4-garage", "level-5-slalom", "level-6-turn"}) {
     const Parsed<Scene> p =
         loadScene(std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/levels/" + name + ".json");
     ASSERT_TRUE(p.ok()) << p.error().toString();

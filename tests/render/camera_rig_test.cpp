@@ -200,8 +200,8 @@ void expectClearOfTheHud(const World& world, const Camera& c, const Obb2& box,
 // start are framed clear of the HUD's panels.
 TEST(CameraRig, LevelsKeepTheBayAndTheStartClearOfTheHud) {
   const std::string dir = std::string(CARDEMO_SOURCE_DIR) + "/assets/";
-  for (const char* level :
-       {"level-1-straight", "level-2-reverse", "level-3-parallel", "level-4-garage"}) {
+  for (const char* level : {"level-1-straight", "level-2-reverse", "level-3-parallel",
+                            "level-4-garage", "level-5-slalom", "level-6-turn"}) {
     const Parsed<Replay> replay = loadReplay(dir + "replays/" + level + ".replay");
     ASSERT_TRUE(replay.ok()) << level;
     const Parsed<Scene> scene = loadScene(dir + "scenes/levels/" + level + ".json");
