@@ -144,12 +144,18 @@ def build(lv):
         sys.exit('make_levels: %s never parks; lengthen its tail of stopped frames' % rp)
     open(rp,'w').write(body+'# Expectations (regenerate with: cardemo replay THIS --print-expect)\n'+'\n'.join(exp)+'\n')
 
-def make1(S,B):
-    bx,by=B[0],B[1]
+def bay_between_cars(bx,by):
+    """The bay of levels 1 and 5, facing +x: two cars on each side, bay lines, a wall behind."""
     parked=[car('N1',bx,by+2.6,0),car('N2',bx,by+5.2,180),car('S1',bx,by-2.6,180),car('S2',bx,by-5.2,0)]
-    obstacles=[{"id":"back-wall","points":box(bx+3.55,by,0.2,8.0)}]
+    wall={"id":"back-wall","points":box(bx+3.55,by,0.2,8.0)}
     mk=[line((bx-2.75,by+y),(bx+2.75,by+y)) for y in (-6.5,-3.9,-1.3,1.3,3.9,6.5)]
     mk.append(line((bx+2.75,by-6.5),(bx+2.75,by+6.5)))
+    return parked,wall,mk
+
+def make1(S,B):
+    bx,by=B[0],B[1]
+    parked,wall,mk=bay_between_cars(bx,by)
+    obstacles=[wall]
     mk.append(arrow((S[0]+4,S[1]),(S[0]+8,S[1])))
     return scene('level-1-straight',1,'Straight in',
       'Drive straight into the bay ahead, between the two cars, and stop short of the wall',
@@ -235,11 +241,9 @@ def make5(S,B,rows):
     bottom=min(c[1] for c in course)-0.7
     obstacles=[{"id":"bollard-%d"%(k+1),"points":bollard(x,mid)} for k,(x,_) in enumerate(turns)]
     obstacles+=[{"id":"kerb-north","points":box((S[0]-3+bx-5)/2,top+0.2,(bx-5-(S[0]-3))/2,0.2)},
-                {"id":"kerb-south","points":box((S[0]-3+bx-5)/2,bottom-0.2,(bx-5-(S[0]-3))/2,0.2)},
-                {"id":"back-wall","points":box(bx+3.55,by,0.2,8.0)}]
-    parked=[car('N1',bx,by+2.6,0),car('N2',bx,by+5.2,180),car('S1',bx,by-2.6,180),car('S2',bx,by-5.2,0)]
-    mk=[line((bx-2.75,by+y),(bx+2.75,by+y)) for y in (-6.5,-3.9,-1.3,1.3,3.9,6.5)]
-    mk.append(line((bx+2.75,by-6.5),(bx+2.75,by+6.5)))
+                {"id":"kerb-south","points":box((S[0]-3+bx-5)/2,bottom-0.2,(bx-5-(S[0]-3))/2,0.2)}]
+    parked,wall,mk=bay_between_cars(bx,by)
+    obstacles.append(wall)
     mk.append(arrow((S[0]+3,S[1]),(S[0]+6,S[1])))
     return scene('level-5-slalom',5,'Slalom',
       'Weave between the bollards, left of the first, then brake into the bay at the end',
