@@ -40,6 +40,7 @@ std::optional<int> runScenePicker(SdlWindow& window, const std::vector<LevelEntr
                                   const BestScores& best, int selected) {
   window.setTitle(windowTitle(kPickerName));
   const std::vector<PickerRow> rows = pickerRows(entries, best);
+  const std::string progress = progressText(levelProgress(entries, best));
   const int count = static_cast<int>(rows.size());
   selected = count > 0 ? std::clamp(selected, 0, count - 1) : 0;
   SdlCanvas canvas(window.renderer());
@@ -71,7 +72,7 @@ std::optional<int> runScenePicker(SdlWindow& window, const std::vector<LevelEntr
           break;
       }
     }
-    drawScenePicker(canvas, rows, selected);
+    drawScenePicker(canvas, rows, selected, progress);
     SDL_RenderPresent(window.renderer());
     SDL_Delay(15);
   }

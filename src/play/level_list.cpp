@@ -49,6 +49,26 @@ std::optional<std::size_t> nextLevel(const std::vector<LevelEntry>& entries, std
   return std::nullopt;
 }
 
+LevelProgress levelProgress(const std::vector<LevelEntry>& entries, const BestScores& best) {
+  LevelProgress progress;
+  for (const LevelEntry& e : entries) {
+    if (e.free_drive) continue;
+    ++progress.levels;
+    if (const ParkingScore* score = best.find(e.scene_name)) {
+      ++progress.parked;
+      progress.stars += std::clamp(score->stars, 0, kMaxStars);
+    }
+  }
+  return progress;
+}
+
+std::string progressText(const LevelProgress& progress) {
+  if (progress.levels <= 0) return {};
+  return std::to_string(progress.parked) + " / " + std::to_string(progress.levels) +
+         " levels parked     \xE2\x98\x85 " + std::to_string(progress.stars) + " / " +
+         std::to_string(progress.possibleStars());
+}
+
 int moveSelection(int selected, int delta, int count) {
   if (count <= 0) return 0;
   const int moved = (selected + delta) % count;

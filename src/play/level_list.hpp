@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "play/best_scores.hpp"
+
 namespace cardemo {
 
 /// One scene the picker lists.
@@ -28,6 +30,23 @@ struct LevelEntry {
 /// `current` is the last level or free drive.
 [[nodiscard]] std::optional<std::size_t> nextLevel(const std::vector<LevelEntry>& entries,
                                                    std::size_t current);
+
+/// The player's progress over the levels of a picker list (free drive does not count).
+struct LevelProgress {
+  int levels = 0;  ///< Levels listed.
+  int parked = 0;  ///< Levels with a best score.
+  int stars = 0;   ///< Their best scores' stars, summed.
+  /// The most stars there are: kMaxStars a level.
+  [[nodiscard]] int possibleStars() const { return kMaxStars * levels; }
+};
+
+/// Progress over `entries` from the best scores (keyed by each entry's scene name).
+[[nodiscard]] LevelProgress levelProgress(const std::vector<LevelEntry>& entries,
+                                          const BestScores& best);
+
+/// The picker's progress line, e.g. "4 / 6 levels parked     \u2605 9 / 18" (empty without
+/// levels).
+[[nodiscard]] std::string progressText(const LevelProgress& progress);
 
 /// `selected` moved by `delta` rows in a list of `count`, wrapping at both ends (0 when empty).
 [[nodiscard]] int moveSelection(int selected, int delta, int count);

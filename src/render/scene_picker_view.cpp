@@ -19,7 +19,8 @@ constexpr Rgba kTask{225, 232, 245, 255};
 
 }  // namespace
 
-void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int selected) {
+void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int selected,
+                     const std::string& summary) {
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const int big = static_cast<int>(std::lround(36.0f * s));
@@ -32,6 +33,11 @@ void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int sel
   float y = 60.0f * s;
   canvas.text({cx - 0.5f * ts.x(), y}, title, big, kTitle);
   y += ts.y() + 30.0f * s;
+  if (!summary.empty()) {
+    const Eigen::Vector2f ss = canvas.textSize(summary, text);
+    canvas.text({cx - 0.5f * ss.x(), y - 18.0f * s}, summary, text, kTask);
+    y += ss.y() + 6.0f * s;
+  }
 
   float title_w = 0.0f;
   float detail_w = 0.0f;

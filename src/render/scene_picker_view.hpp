@@ -15,8 +15,9 @@ struct PickerRow {
   std::string task;    ///< What to do there, shown under the title while selected (may be empty).
 };
 
-/// Draws the picker: a title, the rows with `selected` highlighted (with its task under its title),
-/// and the keys.
-void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int selected);
+/// Draws the picker: a title, `summary` under it (the player's progress; none when empty), the
+/// rows with `selected` highlighted (with its task under its title), and the keys.
+void drawScenePicker(Canvas& canvas, const std::vector<PickerRow>& rows, int selected,
+                     const std::string& summary = {});
 
 }  // namespace cardemo

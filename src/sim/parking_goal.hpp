@@ -40,6 +40,9 @@ struct ParkingScore {
   [[nodiscard]] bool betterThan(const ParkingScore& other) const;
 };
 
+/// The most stars a run can earn.
+inline constexpr int kMaxStars = 3;
+
 /// Stars for a parked run: one for parking, one for no damage, one for parking within the par
 /// time (always earned when the goal has none).
 [[nodiscard]] int starsFor(const Goal& goal, double seconds, int damage);

@@ -60,6 +60,26 @@ TEST(LevelList, NextLevelStopsAtTheLastLevelAndNeverLeadsToFreeDrive) {
   EXPECT_EQ(nextLevel(bundled, 5), std::nullopt);
 }
 
+// Progress counts the levels (not free drive), those with a best score and their stars.
+TEST(LevelList, ProgressCountsParkedLevelsAndTheirStars) {
+  const std::vector<LevelEntry> e{{"a.json", "A", "a", 1, false, ""},
+                                  {"b.json", "B", "b", 2, false, ""},
+                                  {"c.json", "C", "c", 3, false, ""},
+                                  {"lot.json", "Free drive", "parking-lot", 0, true, ""}};
+  BestScores best;
+  EXPECT_EQ(progressText(levelProgress(e, best)), "0 / 3 levels parked     \xE2\x98\x85 0 / 9");
+  ASSERT_TRUE(best.offer("a", {100, 1.0, 0, 3}));
+  ASSERT_TRUE(best.offer("c", {200, 2.0, 10, 1}));
+  ASSERT_TRUE(best.offer("parking-lot", {300, 3.0, 0, 3}));  // free drive: not a level
+  const LevelProgress p = levelProgress(e, best);
+  EXPECT_EQ(p.levels, 3);
+  EXPECT_EQ(p.parked, 2);
+  EXPECT_EQ(p.stars, 4);
+  EXPECT_EQ(p.possibleStars(), 9);
+  EXPECT_EQ(progressText(p), "2 / 3 levels parked     \xE2\x98\x85 4 / 9");
+  EXPECT_EQ(progressText(levelProgress({}, best)), "");
+}
+
 TEST(LevelList, ScenesWithoutLevelAreLeftOutAndBrokenOnesWarned) {
   const fs::path dir = fs::temp_directory_path() / ("cardemo_levels_" + std::to_string(getpid()));
   fs::remove_all(dir);

@@ -40,6 +40,22 @@ TEST(ScenePickerView, ListsEveryRowAndHighlightsTheSelectedOne) {
   }
 }
 
+// The progress line sits between the title and the first row; without one, nothing is drawn there.
+TEST(ScenePickerView, ProgressLineUnderTheTitle) {
+  const std::vector<PickerRow> rows{{"1   Straight in", "4.4 s", ""}};
+  test::RecordingCanvas canvas;
+  drawScenePicker(canvas, rows, 0, "1 / 1 levels parked");
+  const test::RecordingCanvas::Text* title = canvas.lastText("cardemo: choose a scene");
+  const test::RecordingCanvas::Text* line = canvas.lastText("1 / 1 levels parked");
+  const test::RecordingCanvas::Text* row = canvas.lastText("1   Straight in");
+  ASSERT_TRUE(title != nullptr && line != nullptr && row != nullptr);
+  EXPECT_GT(line->at.y(), title->at.y());
+  EXPECT_LT(line->at.y() + 20.0f, row->at.y());
+  test::RecordingCanvas plain;
+  drawScenePicker(plain, rows, 0);
+  EXPECT_EQ(plain.texts.size() + 1, canvas.texts.size());
+}
+
 // The selected row's task is written under its title, inside its highlight; the others' are not.
 TEST(ScenePickerView, SelectedRowShowsItsTaskUnderItsTitle) {
   const std::vector<PickerRow> rows{{"1   Straight in", "4.4 s", "Drive straight in"},
