@@ -40,7 +40,7 @@ bool readScore(const nlohmann::json& j, ParkingScore& out) {
   out.damage = damage->get<int>();
   out.stars = stars->get<int>();
   return out.frames >= 0 && std::isfinite(out.seconds) && out.seconds >= 0.0 && out.damage >= 0 &&
-         out.stars >= 1 && out.stars <= 3;
+         out.stars >= 1 && out.stars <= kMaxStars;
 }
 
 }  // namespace

@@ -140,7 +140,7 @@ std::string timerDetail(const ParkingChallenge& challenge) {
 
 std::string starsText(int stars) {
   std::string out;
-  for (int i = 0; i < 3; ++i) out += i < stars ? "\xE2\x98\x85" : "\xE2\x98\x86";
+  for (int i = 0; i < kMaxStars; ++i) out += i < stars ? "\xE2\x98\x85" : "\xE2\x98\x86";
   return out;
 }
 
