@@ -27,6 +27,7 @@ TMP = tempfile.mkdtemp(prefix="cardemo-levels-")
 EMPTY = os.path.join(TMP, "empty.json")
 ONLY = []
 MAX_SPEED = 5.5  # m/s (about 20 km/h): parking levels are slow
+PLAYER_LENGTH, PLAYER_WIDTH = 4.5, 1.8  # m
 
 
 def run(scene, inputs):
@@ -94,7 +95,7 @@ def scene(name, order, title, task, start, bay, goal, parked, obstacles, marking
     g.update(goal)
     return {"format":"cardemo-scene/1","name":name,"level":{"order":order,"title":title,"task":task},
             "bounds":{"min":bounds[0],"max":bounds[1]},
-            "player":{"x":r(start[0]),"y":r(start[1]),"heading_deg":0,"length":4.5,"width":1.8,"health":100,"max_speed":MAX_SPEED},
+            "player":{"x":r(start[0]),"y":r(start[1]),"heading_deg":0,"length":PLAYER_LENGTH,"width":PLAYER_WIDTH,"health":100,"max_speed":MAX_SPEED},
             "goal":g,"parked":parked,"obstacles":obstacles,"markings":markings}
 
 def dump(obj):
@@ -114,12 +115,13 @@ def dump(obj):
     return '\n'.join(lines)+'\n'
 
 def corners(rows, S):
-    """The player's corners (4.5 m by 1.8 m) in every frame of a manoeuvre started at S."""
+    """The player's corners in every frame of a manoeuvre started at S."""
+    hl,hw=PLAYER_LENGTH/2,PLAYER_WIDTH/2
     out=[]
     for row in rows:
         x,y,h=S[0]+f(row,'x'),S[1]+f(row,'y'),math.radians(f(row,'heading_deg'))
         c,s=math.cos(h),math.sin(h)
-        for u,v in ((2.25,0.9),(2.25,-0.9),(-2.25,0.9),(-2.25,-0.9)):
+        for u,v in ((hl,hw),(hl,-hw),(-hl,hw),(-hl,-hw)):
             out.append((x+u*c-v*s,y+u*s+v*c))
     return out
 
@@ -129,7 +131,9 @@ def build(lv):
     D=(f(end,'x'),f(end,'y')); H=f(end,'heading_deg')
     B=lv['bay']
     S=(B[0]-D[0],B[1]-D[1])
-    sc=lv['make'](S,B,rows) if lv.get('uses_path') else lv['make'](S,B)
+    # The level around its start S and bay B; rows, the manoeuvre's trace, places the slalom's
+    # bollards and the dead end's kerbs (levels 1-4 need only S and B).
+    sc=lv['make'](S,B,rows)
     path='%s/scenes/levels/%s.json'%(OUT,lv['file'])
     open(path,'w').write(dump(sc))
     rp='%s/replays/%s.replay'%(OUT,lv['file'])
@@ -152,7 +156,7 @@ def bay_between_cars(bx,by):
     mk.append(line((bx+2.75,by-6.5),(bx+2.75,by+6.5)))
     return parked,wall,mk
 
-def make1(S,B):
+def make1(S,B,rows):
     bx,by=B[0],B[1]
     parked,wall,mk=bay_between_cars(bx,by)
     obstacles=[wall]
@@ -165,7 +169,7 @@ def make1(S,B):
 LEVEL1={'file':'level-1-straight','bay':(0.0,0.0),'make':make1,'comment':'Level 1: drive straight into the bay ahead and stop.',
     'steps':[('U',lambda r:f(r,'x')>9),('.',30),('D',lambda r:f(r,'speed')<=0),('.',30)]}
 
-def make2(S,B):
+def make2(S,B,rows):
     bx,by=B[0],B[1]
     parked=[car('W1',bx-2.7,by,270),car('W2',bx-5.4,by,90),car('E1',bx+2.7,by,90),car('E2',bx+5.4,by,270),
             car('X1',bx-4.0,S[1]-6.0,90),car('X2',bx+1.5,S[1]-6.0,270),car('X3',bx+6.8,S[1]-6.0,90)]
@@ -180,7 +184,7 @@ def make2(S,B):
 LEVEL2={'file':'level-2-reverse','bay':(0.0,5.0),'make':make2,'comment':'Level 2: drive past the bay, stop, reverse in on full left lock, straighten, stop.',
     'steps':[('U',100),('D',lambda r:f(r,'speed')<=0),('DL',60),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<-85.5),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('D',40),('.',60),('U',lambda r:f(r,'speed')>=0),('.',30)]}
 
-def make3(S,B):
+def make3(S,B,rows):
     bx,by=B[0],B[1]
     parked=[car('F1',bx+7.6,by,0),car('F2',bx+7.6+5.6,by,0),car('R1',bx-5.0,by,0),car('R2',bx-10.6,by,0),
             car('O1',bx-6.0,by+7.6,180),car('O2',bx+3.0,by+7.6,180)]
@@ -202,7 +206,7 @@ def make3(S,B):
 LEVEL3={'file':'level-3-parallel','bay':(0.0,0.0),'make':make3,'comment':'Level 3: stop beside the front car, reverse on right lock, straighten, then left lock into the space.',
     'steps':[('U',90),('D',lambda r:f(r,'speed')<=0),('DR',60),(('R',8),('DR',16),lambda r:f(r,'heading_deg')>42),('D',30),('.',20),('DL',20),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<2.5),('U',lambda r:f(r,'speed')>=0),('.',30)]}
 
-def make4(S,B):
+def make4(S,B,rows):
     bx,by=B[0],B[1]
     inner=1.25      # half the garage's inner width: 2.5 m for a 1.8 m car
     door=by-2.75    # door line; the back wall is 0.25 m behind the parked car's nose
@@ -250,7 +254,7 @@ def make5(S,B,rows):
       S,(bx,by,0,5.5,2.6),
       {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
       parked,obstacles,mk,[[r(S[0]-4),r(min(bottom,by)-8)],[bx+5,r(max(top,by)+8)]])
-LEVEL5={'file':'level-5-slalom','bay':(0.0,0.0),'make':make5,'uses_path':True,
+LEVEL5={'file':'level-5-slalom','bay':(0.0,0.0),'make':make5,
     'comment':'Level 5: accelerate, full left and right lock in turn past three bollards, straighten, brake in the bay.',
     'steps':[('U',lambda q:f(q,'x')>1),('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
              ('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
@@ -281,7 +285,7 @@ def make6(S,B,rows):
       S,(bx,by,180,5.5,2.6),
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":20,"time_limit":120},
       parked,obstacles,mk,[[r(mouth-4),r(bottom-1)],[r(end+1),r(top+1)]])
-LEVEL6={'file':'level-6-turn','bay':(0.0,0.0),'make':make6,'uses_path':True,
+LEVEL6={'file':'level-6-turn','bay':(0.0,0.0),'make':make6,
     'comment':'Level 6: forward on left lock to face the kerb, reverse on right lock, forward on left lock, straighten, drive out, stop.',
     'steps':[('U',50),('.',10),(('L',16),('UL',8),lambda q:f(q,'heading_deg')>80),('D',lambda q:f(q,'speed')<=0),
              ('DR',30),(('R',12),('DR',12),lambda q:f(q,'heading_deg')>150),('U',lambda q:f(q,'speed')>=0),
@@ -298,7 +302,7 @@ def main():
     ONLY = sys.argv[2:]
     with open(EMPTY, "w") as f:
         json.dump({"format": "cardemo-scene/1", "name": "empty", "parked": [],
-                   "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8,
+                   "player": {"x": 0, "y": 0, "heading_deg": 0, "length": PLAYER_LENGTH, "width": PLAYER_WIDTH,
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:

@@ -215,7 +215,7 @@ const double* numbersOf(const Obb3& box) {
                                 std::max(a.frameDefect(), b.frameDefect()));
 }
 
-// collideObb3's AVX2 kernel (obb3_vector_kernels.hpp, largestGapAvx2) compares candidate
+// collideObb3's vector kernel (obb3_vector_kernels.hpp, largestGapVector) compares candidate
 // separations without roots (the batch kernels' Candidate, batch_kernels.hpp): gap / sqrt(length2)
 // is carried as gap, length2 and square = gap |gap|, and as z -> z|z| is increasing, y's separation
 // is the larger iff y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1.

@@ -239,7 +239,7 @@ struct Candidates {
   }
 }
 
-// overlapAvx2's kernel (obb3_lanes.hpp).
+// overlapAvx2's and overlapAvx512's kernel (obb3_lanes.hpp).
 [[gnu::always_inline]] inline Verdict overlapVector(const double* a, const double* b, double phi) {
   Lanes p = poseAndFaces(a, b);
   const double face =
@@ -254,7 +254,7 @@ struct Candidates {
   return Verdict::kUndecided;
 }
 
-// largestGapAvx2's kernel (obb3_lanes.hpp).
+// largestGapAvx2's and largestGapAvx512's kernel (obb3_lanes.hpp).
 [[gnu::always_inline]] inline bool largestGapVector(const double* a, const double* b, double phi,
                                                     LargestGap& out) {
   const EdgeBound filter = edgeBound(a, b, phi);

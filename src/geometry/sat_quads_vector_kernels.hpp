@@ -44,7 +44,7 @@ namespace {
   return _mm_cvtsd_f64(_mm_min_pd(half, _mm_unpackhi_pd(half, half)));
 }
 
-// widestAxisOfQuadsAvx2's kernel (sat_quads.hpp).
+// widestAxisOfQuadsAvx2's and widestAxisOfQuadsAvx512's kernel (sat_quads.hpp).
 [[gnu::always_inline]] inline bool widestAxisOfQuadsVector(const double* a, const double* b,
                                                            WidestAxis& out) {
   // World coordinates by vertex pairs: x01 = (A x0, B x0, A x1, B x1), and so on.

@@ -56,8 +56,8 @@ void drawObstacle(Canvas& canvas, const Camera& camera, const ConvexPolygon& pol
   for (int i = 0; i < poly.count; ++i)
     pts[static_cast<std::size_t>(i)] = camera.toScreen(poly.vertex(i));
   const std::span<const Eigen::Vector2f> span(pts.data(), static_cast<std::size_t>(poly.count));
-  const Eigen::Vector2d extent = poly.aabb().max - poly.aabb().min;
-  if (extent.maxCoeff() > kPostMaxSize) {
+  const Aabb2 bounds = poly.aabb();
+  if ((bounds.max - bounds.min).maxCoeff() > kPostMaxSize) {
     canvas.fillConvex(span, palette.obstacle);
     outline(canvas, span, 2.0f, shade(palette.obstacle, 0.7));
     return;
