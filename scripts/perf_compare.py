@@ -1,19 +1,17 @@
 #!/usr/bin/env python3
-"""Prints, as markdown, how a few benchmark rows moved across the committed runs of the suite.
+"""Prints, as markdown, a few benchmark rows side by side across saved runs of the suite.
 
-Every version of docs/perf/bench.json that git holds is one run of scripts/perf_report.py. For the
-newest N of them (default 6) the script prints the run's start (from the benchmark's own context),
-the commit that saved it, the machine (its MHz as reported and its widest batch path: the sessions
-do not all run on the same CPU), its repetitions and load average, and the fastest repetition of a few
-sentinel rows. Rows that did not change between two runs show how much a run on a shared machine
-moves by itself.
+Each FILE is the Google Benchmark JSON of one run (scripts/perf_report.py keeps the last one as
+BUILD/bench.json; copy it aside to keep it). For each run the script prints its command and commit
+(when scripts/perf_report.py recorded them), the machine (MHz as reported, widest batch path), its
+repetitions and load average, and the fastest repetition of a few sentinel rows. Rows whose code did
+not change between two runs show how much a run on a shared machine moves by itself.
 
-Usage: scripts/perf_history.py [--runs N] [ROW ...]     (ROW: a benchmark name without
-       /iterations:..., e.g. narrow/collidePolygons/1k/box2d)
+Usage: scripts/perf_compare.py FILE [FILE ...] [--rows ROW ...]
+       (ROW: a benchmark name without /iterations:..., e.g. narrow/collidePolygons/1k/box2d)
 """
 import argparse
 import json
-import subprocess
 import sys
 
 SENTINELS = [
@@ -25,11 +23,6 @@ SENTINELS = [
     "step/lot/1M/cardemo",
     "replay/demo/cardemo",
 ]
-PATH = "docs/perf/bench.json"
-
-
-def git(*args):
-    return subprocess.run(["git", *args], capture_output=True, text=True, check=True).stdout
 
 
 def fastest(data):
@@ -54,24 +47,21 @@ def repetitions(data):
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--runs", type=int, default=6, help="how many of the newest runs")
-    ap.add_argument("rows", nargs="*", default=SENTINELS, help="benchmark names")
+    ap.add_argument("files", nargs="+", help="saved runs (Google Benchmark JSON)")
+    ap.add_argument("--rows", nargs="+", default=SENTINELS, help="benchmark names")
     args = ap.parse_args(argv)
-    commits = git("log", f"-{args.runs}", "--format=%h", "--", PATH).split()
-    runs = []
-    for commit in commits:
-        data = json.loads(git("show", f"{commit}:{PATH}"))
-        runs.append((commit, data))
     print("Fastest repetition of each row, ns per item (pair, query, step or frame).\n")
-    header = ["run (start)", "saved in", "machine", "reps", "load avg"] + [f"`{r}`" for r in args.rows]
+    header = ["run", "commit", "machine", "reps", "load avg"] + [f"`{r}`" for r in args.rows]
     print("| " + " | ".join(header) + " |")
     print("|" + "---|" * len(header))
-    for commit, data in runs:
-        ctx = data["context"]
+    for path in args.files:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+        ctx = data.get("context", {})
         load = ctx.get("load_avg") or []
         times = fastest(data)
         machine = f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('batch_path', '?')}"
-        cells = [ctx.get("date", "?")[:16].replace("T", " "), commit, machine, str(repetitions(data)),
+        cells = [path, ctx.get("git_commit", "?"), machine, str(repetitions(data)),
                  f"{load[0]:.2f}" if load else "?"]
         cells += [f"{times[r]:,.1f}" if r in times else "-" for r in args.rows]
         print("| " + " | ".join(cells) + " |")
