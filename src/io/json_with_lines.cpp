@@ -223,26 +223,6 @@ const char* kindName(Node::Kind kind) {
   return "a value";
 }
 
-std::string printable(std::string_view text, std::size_t max_chars) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (const char c : text) {
-    if (out.size() >= max_chars) {
-      out += "...";
-      break;
-    }
-    const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x20 && u < 0x7f) {
-      out += c;
-    } else {
-      out += "\\x";
-      out += kHex[u >> 4];
-      out += kHex[u & 15];
-    }
-  }
-  return out;
-}
-
 std::variant<Node, SyntaxError> parse(std::string_view text) {
   // The lexer takes a NUL byte for the end of input, which would silently drop what follows.
   if (const void* nul = std::memchr(text.data(), '\0', text.size()); nul != nullptr) {

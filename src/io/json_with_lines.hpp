@@ -8,6 +8,8 @@
 #include <variant>
 #include <vector>
 
+#include "io/printable.hpp"
+
 namespace cardemo::json_lines {
 
 struct Member;
@@ -52,7 +54,7 @@ inline constexpr std::size_t kMaxValues = std::size_t{1} << 24;
 /// "a number", "an object", ... for messages.
 [[nodiscard]] const char* kindName(Node::Kind kind);
 
-/// `text` made safe to print: non-printable bytes as \xNN, cut to `max_chars` with "...".
-[[nodiscard]] std::string printable(std::string_view text, std::size_t max_chars = 48);
+/// The byte escaper for messages (io/printable).
+using cardemo::printable;
 
 }  // namespace cardemo::json_lines

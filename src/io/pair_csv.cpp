@@ -8,6 +8,7 @@
 #include <span>
 #include <utility>
 
+#include "io/printable.hpp"
 #include "io/replay_text.hpp"
 #include "io/text_lines.hpp"
 
@@ -59,11 +60,11 @@ bool parseField(std::string_view field, const Column& column, double& out, std::
   double v = 0.0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec == std::errc::result_out_of_range) {
-    why = "number out of range " + text::quoted(field);
+    why = "number out of range " + inQuotes(field);
     return false;
   }
   if (ec != std::errc() || end != digits.data() + digits.size()) {
-    why = "not a number: " + text::quoted(field);
+    why = "not a number: " + inQuotes(field);
     return false;
   }
   switch (column.kind) {

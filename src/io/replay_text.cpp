@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "io/printable.hpp"
 #include "io/text_lines.hpp"
 
 // Syntax (docs/replay.md): after the header `cardemo-replay 1`, each line is one of
@@ -16,7 +17,6 @@
 namespace cardemo {
 namespace {
 
-using text::quoted;
 using text::trim;
 
 /// Replay files larger than this are refused (about 8 million key changes).
@@ -118,18 +118,18 @@ bool parseKeys(std::string_view s, InputFrame& keys, std::string& why) {
       case 'l':
       case 'r':
       case 'h':
-        why = "keys " + quoted(s) + ": use upper-case U, D, L, R, H";
+        why = "keys " + inQuotes(s) + ": use upper-case U, D, L, R, H";
         return false;
       case '.':
-        why = "keys " + quoted(s) + ": \".\" means no keys and cannot be combined with letters";
+        why = "keys " + inQuotes(s) + ": \".\" means no keys and cannot be combined with letters";
         return false;
       default:
-        why = "keys " + quoted(s) + ": unknown key " + quoted(std::string_view(&c, 1)) +
+        why = "keys " + inQuotes(s) + ": unknown key " + inQuotes(std::string_view(&c, 1)) +
               " (expected U, D, L, R, H or \".\")";
         return false;
     }
     if (*key) {
-      why = "keys " + quoted(s) + ": key " + std::string(1, c) + " repeated";
+      why = "keys " + inQuotes(s) + ": key " + std::string(1, c) + " repeated";
       return false;
     }
     *key = true;
@@ -172,14 +172,14 @@ class ReplayParser {
         // Line 1 (the header) may start with a byte order mark, which is not part of the line.
         if (line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
         if (const std::size_t at = text::findControl(line); at != std::string_view::npos) {
-          return error("control character " + quoted(line.substr(at, 1)) + " in line");
+          return error("control character " + inQuotes(line.substr(at, 1)) + " in line");
         }
         if (auto e = parseHeader(src, line)) return e;
         header = true;
         continue;
       }
       if (scanned.control != std::string_view::npos) {
-        return error("control character " + quoted(line.substr(scanned.control, 1)) + " in line");
+        return error("control character " + inQuotes(line.substr(scanned.control, 1)) + " in line");
       }
       line = trim(line.substr(0, scanned.comment));
       if (line.empty()) continue;
@@ -209,10 +209,10 @@ class ReplayParser {
     if (src.find_first_not_of(" \t\r\n") == std::string_view::npos)
       return error("empty replay file");
     if (line.starts_with("cardemo-replay")) {
-      return error("unsupported replay version " + quoted(line) +
+      return error("unsupported replay version " + inQuotes(line) +
                    " (expected \"cardemo-replay 1\")");
     }
-    return error("not a replay file: line 1 must be \"cardemo-replay 1\", found " + quoted(line));
+    return error("not a replay file: line 1 must be \"cardemo-replay 1\", found " + inQuotes(line));
   }
 
   std::optional<InputError> parseLine(std::string_view line, Replay& r) {
@@ -234,7 +234,7 @@ class ReplayParser {
       std::int64_t hz = 0;
       bool too_large = false;
       if (!parseWhole(rest, 10000, hz, too_large) || hz < 1) {
-        return error("hz: expected a whole number from 1 to 10000, found " + quoted(rest));
+        return error("hz: expected a whole number from 1 to 10000, found " + inQuotes(rest));
       }
       hz_line_ = line_;
       r.hz = static_cast<int>(hz);
@@ -242,9 +242,9 @@ class ReplayParser {
     }
     if (word == "expect") return parseExpect(rest, r.expect);
     if (word.front() == '-' || word.front() == '+') {
-      return error("count: expected a whole number >= 1, found " + quoted(word));
+      return error("count: expected a whole number >= 1, found " + inQuotes(word));
     }
-    return error("unknown directive " + quoted(word) +
+    return error("unknown directive " + inQuotes(word) +
                  " (expected scene, hz, expect or a COUNT KEYS line)");
   }
 
@@ -254,15 +254,15 @@ class ReplayParser {
     bool too_large = false;
     if (!parseWhole(count_text, kMaxReplayFrames, count, too_large)) {
       if (too_large) {
-        return error("count " + quoted(count_text) + " exceeds the limit of " +
+        return error("count " + inQuotes(count_text) + " exceeds the limit of " +
                      std::to_string(kMaxReplayFrames) + " frames");
       }
-      return error("count: expected a whole number >= 1, found " + quoted(count_text));
+      return error("count: expected a whole number >= 1, found " + inQuotes(count_text));
     }
     if (count < 1) return error("count must be >= 1");
     const std::string_view keys_text = firstWord(rest);
     if (keys_text.empty()) return error("expected COUNT KEYS (e.g. \"120 U\"), keys missing");
-    if (!rest.empty()) return error("unexpected " + quoted(rest) + " after the keys");
+    if (!rest.empty()) return error("unexpected " + inQuotes(rest) + " after the keys");
     InputRun run;
     run.count = count;
     std::string why;
@@ -309,7 +309,7 @@ class ReplayParser {
     } else if (what == "hash") {
       if (hash_line_ != 0) return duplicate("expect hash", hash_line_);
       if (!isHash(rest)) {
-        return error("expect hash: expected 16 lower-case hex digits, found " + quoted(rest));
+        return error("expect hash: expected 16 lower-case hex digits, found " + inQuotes(rest));
       }
       hash_line_ = line_;
       e.hash = std::string(rest);
@@ -330,11 +330,11 @@ class ReplayParser {
         e.parked = std::optional<std::int64_t>{v};
       } else {
         return error("expect parked: expected a frame from 0 to " +
-                     std::to_string(kMaxReplayFrames) + " or \"never\", found " + quoted(rest));
+                     std::to_string(kMaxReplayFrames) + " or \"never\", found " + inQuotes(rest));
       }
       parked_line_ = line_;
     } else {
-      return error("unknown expectation " + quoted(what) +
+      return error("unknown expectation " + inQuotes(what) +
                    " (expected health, hits, hit, frames, hash or parked)");
     }
     return std::nullopt;
@@ -347,7 +347,7 @@ class ReplayParser {
 
   InputError badNumber(const std::string& what, std::string_view found, std::int64_t max) const {
     return error(what + ": expected a whole number from 0 to " + std::to_string(max) + ", found " +
-                 quoted(found));
+                 inQuotes(found));
   }
 
   InputError duplicate(const std::string& what, int first_line) const {

@@ -55,25 +55,4 @@ class LineReader {
   return std::string_view::npos;
 }
 
-/// `s` made safe to quote in a message: non-printable bytes as \xNN, cut after `max_chars`.
-[[nodiscard]] inline std::string quoted(std::string_view s, std::size_t max_chars = 40) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out = "\"";
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (i == max_chars) {
-      out += "...";
-      break;
-    }
-    const auto u = static_cast<unsigned char>(s[i]);
-    if (u >= 0x20 && u < 0x7f) {
-      out += s[i];
-    } else {
-      out += "\\x";
-      out += kHex[u >> 4];
-      out += kHex[u & 15];
-    }
-  }
-  return out + "\"";
-}
-
 }  // namespace cardemo::text

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "io/atomic_file.hpp"
+#include "io/printable.hpp"
 
 namespace cardemo {
 namespace {
@@ -96,7 +97,7 @@ BestScores loadBestScores(const std::string& path, std::string& warning) {
   }
   for (const auto& [name, entry] : j["scenes"].items()) {
     ParkingScore score;
-    if (!readScore(entry, score)) return warn("bad entry for scene \"" + name + "\"");
+    if (!readScore(entry, score)) return warn("bad entry for scene " + inQuotes(name));
     scores.by_scene[name] = score;
   }
   return scores;
