@@ -419,13 +419,24 @@ std::string formatExpectations(const ReplayExpectations& e) {
   return out;
 }
 
-std::string formatReplay(const Replay& replay) {
+void appendInputLine(std::string& out, std::int64_t count, const InputFrame& keys) {
+  char digits[24];
+  const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, count);
+  out.append(digits, static_cast<std::size_t>(end - digits));
+  out += ' ';
+  out += keysText(keys);
+  out += '\n';
+}
+
+std::string replayHeaderText(const std::string& scene, int hz) {
   std::string out = std::string(kHeader) + "\n";
-  if (!replay.scene.empty()) out += "scene " + replay.scene + "\n";
-  out += "hz " + std::to_string(replay.hz) + "\n";
-  for (const InputRun& run : replay.runs) {
-    out += std::to_string(run.count) + " " + keysText(run.keys) + "\n";
-  }
+  if (!scene.empty()) out += "scene " + scene + "\n";
+  return out + "hz " + std::to_string(hz) + "\n";
+}
+
+std::string formatReplay(const Replay& replay) {
+  std::string out = replayHeaderText(replay.scene, replay.hz);
+  for (const InputRun& run : replay.runs) appendInputLine(out, run.count, run.keys);
   return out + formatExpectations(replay.expect);
 }
 

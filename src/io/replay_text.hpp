@@ -59,8 +59,15 @@ inline constexpr std::size_t kMaxLineBytes = 4096;
 /// Reads and parses a replay file.
 [[nodiscard]] Parsed<Replay> loadReplay(const std::string& path);
 
-/// Formats keys as the replay writes them: `.` or letters in the order U D L R H.
+/// Formats keys as the replay writes them: `.` or letters in the order U D L R H. The only writer
+/// of key text: every replay line goes through it (at most 5 characters: no allocation).
 [[nodiscard]] std::string keysText(const InputFrame& keys);
+
+/// Appends the input line `COUNT KEYS\n`; allocates only when `out` lacks the capacity.
+void appendInputLine(std::string& out, std::int64_t count, const InputFrame& keys);
+
+/// The lines before the inputs: `cardemo-replay 1`, `scene SCENE` (left out when empty), `hz HZ`.
+[[nodiscard]] std::string replayHeaderText(const std::string& scene, int hz);
 
 /// The expectation lines (`expect ...`) for `expectations`, one per line, in a fixed order.
 [[nodiscard]] std::string formatExpectations(const ReplayExpectations& expectations);

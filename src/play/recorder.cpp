@@ -13,6 +13,8 @@
 #include <system_error>
 #include <utility>
 
+#include "io/replay_text.hpp"
+
 namespace cardemo {
 namespace {
 
@@ -108,9 +110,10 @@ Recorder::Recorder(std::string path, const std::string& scene_path, int hz,
   // The longest line is "100000000 UDLRH\n": 32 bytes per run is ample.
   pending_.reserve(static_cast<std::size_t>(std::min<std::int64_t>(flush_every_, 1 << 15)) * 32 +
                    2 * kPage);
-  pending_ = "cardemo-replay 1\n";
-  if (!scene_path.empty()) pending_ += "scene " + sceneRelativeTo(path_, scene_path) + "\n";
-  pending_ += "hz " + std::to_string(hz) + "\n# frames  keys\n";
+  // The column comment helps a reader; formatReplay leaves it out.
+  pending_ = replayHeaderText(
+                 scene_path.empty() ? std::string() : sceneRelativeTo(path_, scene_path), hz) +
+             "# frames  keys\n";
   (void)flushPending();
 }
 
@@ -138,19 +141,7 @@ void Recorder::fail(const std::string& what) {
 
 void Recorder::writeRun() {
   if (run_length_ == 0) return;
-  char line[48];
-  char keys[6];
-  int k = 0;
-  if (run_keys_.up) keys[k++] = 'U';
-  if (run_keys_.down) keys[k++] = 'D';
-  if (run_keys_.left) keys[k++] = 'L';
-  if (run_keys_.right) keys[k++] = 'R';
-  if (run_keys_.handbrake) keys[k++] = 'H';
-  if (k == 0) keys[k++] = '.';
-  keys[k] = '\0';
-  const int n =
-      std::snprintf(line, sizeof line, "%lld %s\n", static_cast<long long>(run_length_), keys);
-  pending_.append(line, static_cast<std::size_t>(n));
+  appendInputLine(pending_, run_length_, run_keys_);
   run_length_ = 0;
 }
 

@@ -54,6 +54,44 @@ TEST(Recorder, MergesRunsAndPublishesOnFinish) {
             "expect health 100\n");
 }
 
+// The recorder writes its input lines with the replay format's own writer (io/replay_text).
+TEST(Recorder, WritesEveryKeySetAsTheReplayFormatDoes) {
+  const fs::path dir = testing::freshTempDir("recorder_test_keys");
+  const fs::path out = dir / "keys.replay";
+  Replay expected;
+  {
+    Recorder rec(out.string(), "", 120, 25);
+    for (int bits = 0; bits < 32; ++bits) {
+      const InputRun run{1 + bits % 5, InputFrame::fromBits(static_cast<std::uint8_t>(bits))};
+      for (std::int64_t i = 0; i < run.count; ++i) rec.record(run.keys);
+      expected.runs.push_back(run);
+    }
+    ASSERT_EQ(rec.finish(), "");
+  }
+  const Parsed<Replay> back = parseReplay(slurp(out), "keys.replay");
+  ASSERT_TRUE(back.ok()) << back.error().toString();
+  // Flush points may split a run in two; the frames and their keys are what must match.
+  std::vector<InputFrame> recorded;
+  std::vector<InputFrame> played;
+  for (const InputRun& run : back.value().runs)
+    recorded.insert(recorded.end(), run.count, run.keys);
+  for (const InputRun& run : expected.runs) played.insert(played.end(), run.count, run.keys);
+  EXPECT_EQ(recorded, played);
+  // Without splits (one flush at the end) the body is formatReplay's, line for line.
+  {
+    const fs::path whole = dir / "whole.replay";
+    Recorder rec(whole.string(), "", 120, 1'000'000);
+    for (const InputRun& run : expected.runs) {
+      for (std::int64_t i = 0; i < run.count; ++i) rec.record(run.keys);
+    }
+    ASSERT_EQ(rec.finish(), "");
+    std::string text = slurp(whole);
+    const std::string comment = "# frames  keys\n";
+    text.erase(text.find(comment), comment.size());
+    EXPECT_EQ(text, formatReplay(expected));
+  }
+}
+
 TEST(Recorder, FlushesPeriodicallyAsAValidPrefix) {
   const fs::path dir = testing::freshTempDir("recorder_test_flush");
   const fs::path out = dir / "r.replay";
