@@ -1,15 +1,17 @@
 #pragma once
 /// A file written as a stream and published atomically when finished.
 
-#include <cstdio>
+#include <memory>
 #include <string>
 #include <string_view>
 
 namespace cardemo {
 
-/// Streams into `PATH.tmp.PID`, then commit() flushes, fsyncs and renames it onto PATH. Destroyed
-/// without commit(), it removes the temporary file, so readers never see a half-written PATH.
-/// PATH "-" streams to standard output and commit() just flushes.
+class DurableFile;
+
+/// Streams into `PATH.tmp.PID` (io/durable_file), then commit() syncs it, renames it onto PATH and
+/// syncs the folder. Destroyed without commit(), it removes the temporary file, so readers never
+/// see a half-written PATH. PATH "-" streams to standard output and commit() just flushes.
 class AtomicStream {
  public:
   /// Opens the temporary file; check error() afterwards.
@@ -20,7 +22,7 @@ class AtomicStream {
 
   /// Appends bytes (buffered).
   void write(std::string_view bytes);
-  /// Flushes buffered bytes to the OS and fsyncs (the data survives a crash of this process).
+  /// Writes the buffered bytes and fsyncs them (the data survives a crash of this process).
   void sync();
   /// Publishes the file; returns an empty string or what went wrong.
   [[nodiscard]] std::string commit();
@@ -28,10 +30,12 @@ class AtomicStream {
   [[nodiscard]] const std::string& error() const { return error_; }
 
  private:
+  bool drain();
   std::string path_;
-  std::string temp_path_;
-  std::FILE* file_ = nullptr;
+  std::unique_ptr<DurableFile> file_;  // null for standard output and once committed
+  std::string buffer_;
   bool to_stdout_ = false;
+  bool committed_ = false;
   std::string error_;
 };
 

@@ -1,18 +1,15 @@
 #include "play/recorder.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
+#include "io/durable_file.hpp"
 #include "io/replay_text.hpp"
 
 namespace cardemo {
@@ -41,48 +38,12 @@ std::string sceneRelativeTo(const std::string& replay_path, const std::string& s
   return rel.generic_string();
 }
 
-std::string osError(const std::string& what, const std::string& path, int err) {
-  return path + ": cannot " + what + ": " + std::strerror(err);
-}
-
-bool writeAll(int fd, const char* data, std::size_t n) {
-  while (n > 0) {
-    const ssize_t w = ::write(fd, data, n);
-    if (w < 0 && errno == EINTR) continue;
-    if (w < 0) return false;
-    if (w == 0) {
-      errno = ENOSPC;
-      return false;
-    }
-    data += w;
-    n -= static_cast<std::size_t>(w);
-  }
-  return true;
-}
-
-// A rename is durable once the folder holding it is fsynced.
-void fsyncFolderOf(const std::string& path) {
-  const fs::path folder = fs::path(path).parent_path();
-  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  (void)::fsync(fd);
-  ::close(fd);
-}
-
-bool lockedByAnotherProcess(const std::string& part) {
-  const int fd = ::open(part.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool locked = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
-  ::close(fd);
-  return locked;
-}
-
 }  // namespace
 
 std::string leftoverRecording(const std::string& path) {
   const std::string part = path + ".part";
-  struct stat st {};
-  if (::lstat(part.c_str(), &st) != 0) return {};
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(part, ec))) return {};
   if (lockedByAnotherProcess(part)) {
     return part + ": another cardemo is recording to it right now; record to another file";
   }
@@ -98,15 +59,15 @@ Recorder::Recorder(std::string path, const std::string& scene_path, int hz,
       part_path_(path_ + ".part"),
       flush_every_(flush_every_frames < 1 ? 1 : flush_every_frames) {
   // Never truncate an existing PATH.part: it is another game's, or a killed game's recording.
-  fd_ = ::open(part_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd_ < 0) {
-    const int err = errno;
-    error_ = err == EEXIST ? leftoverRecording(path_) : osError("create", part_path_, err);
-    if (error_.empty()) error_ = osError("create", part_path_, err);
+  file_ = std::make_unique<DurableFile>(part_path_, DurableFile::Existing::kRefuse);
+  if (!file_->isOpen()) {
+    if (file_->errorNumber() == EEXIST) error_ = leftoverRecording(path_);
+    if (error_.empty()) error_ = file_->error();
+    file_.reset();
     return;
   }
   // Other games (and `cardemo play` itself, before it opens a window) see the lock.
-  (void)::flock(fd_, LOCK_EX | LOCK_NB);
+  (void)file_->tryLock();
   // The longest line is "100000000 UDLRH\n": 32 bytes per run is ample.
   pending_.reserve(static_cast<std::size_t>(std::min<std::int64_t>(flush_every_, 1 << 15)) * 32 +
                    2 * kPage);
@@ -121,22 +82,19 @@ Recorder::~Recorder() {
   (void)finish();
 }
 
-void Recorder::fail(const std::string& what) {
-  const int err = errno;
-  error_ = osError(what, part_path_, err);
+void Recorder::fail() {
+  error_ = file_->error();
   if (written_bytes_ == durable_bytes_ && durable_bytes_ == 0) {
     // Not even the header is on disk: leave no file that would not parse.
-    ::close(fd_);
-    ::unlink(part_path_.c_str());
+    file_->discard();
   } else {
     // Back to the last complete, fsynced state: a valid replay of durable_frames_ frames.
-    (void)::ftruncate(fd_, durable_bytes_);
-    (void)::fsync(fd_);
-    ::close(fd_);
+    (void)file_->truncate(durable_bytes_);
+    (void)file_->close();
     error_ += "; recording stopped, its first " + std::to_string(durable_frames_) +
               " frames are kept in " + part_path_;
   }
-  fd_ = -1;
+  file_.reset();
 }
 
 void Recorder::writeRun() {
@@ -146,7 +104,7 @@ void Recorder::writeRun() {
 }
 
 bool Recorder::flushPending() {
-  if (fd_ < 0) return false;
+  if (!file_) return false;
   std::size_t start = 0;
   while (start < pending_.size()) {
     const auto room = static_cast<std::size_t>(kPage - written_bytes_ % kPage);
@@ -162,23 +120,23 @@ bool Recorder::flushPending() {
       std::memset(pad, ' ', room);
       pad[0] = room > 1 ? '#' : '\n';
       pad[room - 1] = '\n';
-      if (!writeAll(fd_, pad, room)) {
-        fail("write");
+      if (!file_->append(std::string_view(pad, room))) {
+        fail();
         return false;
       }
       written_bytes_ += static_cast<std::int64_t>(room);
       continue;
     }
-    if (!writeAll(fd_, pending_.data() + start, end - start)) {
-      fail("write");
+    if (!file_->append(std::string_view(pending_).substr(start, end - start))) {
+      fail();
       return false;
     }
     written_bytes_ += static_cast<std::int64_t>(end - start);
     start = end;
   }
   pending_.clear();
-  if (::fsync(fd_) != 0) {
-    fail("write");
+  if (!file_->sync()) {
+    fail();
     return false;
   }
   durable_bytes_ = written_bytes_;
@@ -187,7 +145,7 @@ bool Recorder::flushPending() {
 }
 
 void Recorder::record(const InputFrame& input) {
-  if (finished_ || fd_ < 0) return;
+  if (finished_ || !file_) return;
   if (run_length_ > 0 && !(input == run_keys_)) writeRun();
   run_keys_ = input;
   ++run_length_;
@@ -203,24 +161,18 @@ void Recorder::record(const InputFrame& input) {
 std::string Recorder::finish(const std::string& trailer) {
   if (finished_) return error_;
   finished_ = true;
-  if (fd_ < 0) return error_;
+  if (!file_) return error_;
   writeRun();
   if (!trailer.empty()) {
     pending_ += trailer;
     if (trailer.back() != '\n') pending_ += '\n';
   }
   if (!flushPending()) return error_;
-  if (::close(fd_) != 0) {
-    fd_ = -1;
-    error_ = osError("close", part_path_, errno);
-    return error_;
+  if (!file_->publishAs(path_)) {
+    error_ = file_->error();
+    if (!file_->published()) error_ += "; the recording is complete in " + part_path_;
   }
-  fd_ = -1;
-  if (std::rename(part_path_.c_str(), path_.c_str()) != 0) {
-    error_ = osError("rename onto", path_, errno) + "; the recording is complete in " + part_path_;
-    return error_;
-  }
-  fsyncFolderOf(path_);
+  file_.reset();
   return error_;
 }
 

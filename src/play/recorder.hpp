@@ -2,11 +2,14 @@
 /// Records the inputs of a live game as a replay file, appended and flushed as it goes.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "sim/input_frame.hpp"
 
 namespace cardemo {
+
+class DurableFile;
 
 /// Writes `cardemo-replay 1` text to `PATH.part` while playing: runs of equal inputs are merged,
 /// and every `flush_every_frames` frames what was recorded is written and fsynced, so a killed
@@ -46,11 +49,11 @@ class Recorder {
  private:
   void writeRun();
   bool flushPending();
-  void fail(const std::string& what);
+  void fail();
   std::string path_;
   std::string part_path_;
-  int fd_ = -1;
-  std::string pending_;  // lines not yet written (capacity reserved up front)
+  std::unique_ptr<DurableFile> file_;  // PATH.part while recording (io/durable_file)
+  std::string pending_;                // lines not yet written (capacity reserved up front)
   InputFrame run_keys_;
   std::int64_t run_length_ = 0;
   std::int64_t frames_ = 0;
