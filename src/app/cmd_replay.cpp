@@ -32,7 +32,7 @@ std::string traceRow(const World& world) {
   const CarState& car = world.car();
   std::string row = std::to_string(world.frame());
   for (double v : {car.position.x(), car.position.y(), degreesOf(car.direction), car.speed,
-                   car.steer * (180.0 / 3.14159265358979323846)}) {
+                   degreesFromRadians(car.steer)}) {
     row += ',';
     row += numberText(v);
   }

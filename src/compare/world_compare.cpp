@@ -13,11 +13,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <optional>
 #include <variant>
 
 #include "compare/box2d/box2d_shapes.hpp"
+#include "geometry/angle.hpp"
 #include "io/replay_runner.hpp"
 #include "io/replay_text.hpp"
 
@@ -114,12 +114,6 @@ std::int64_t touchingStaticPairs(const std::vector<b2Body*>& bodies) {
   return count;
 }
 
-double wrapAngle(double a) {
-  while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
-  while (a <= -std::numbers::pi) a += 2 * std::numbers::pi;
-  return a;
-}
-
 }  // namespace
 
 Parsed<WorldComparison> compareWorld(const std::string& replay_path,
@@ -158,7 +152,7 @@ Parsed<WorldComparison> compareWorld(const std::string& replay_path,
     const Eigen::Vector2d v = (w.car().position - position) / static_cast<double>(dt);
     position = w.car().position;
     player->SetLinearVelocity(b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y())));
-    player->SetAngularVelocity(static_cast<float>(wrapAngle(w.car().heading - heading) / dt));
+    player->SetAngularVelocity(static_cast<float>(wrapRadians(w.car().heading - heading) / dt));
     heading = w.car().heading;
     listener.begun.clear();
     b2.Step(dt, kVelocityIterations, kPositionIterations);

@@ -17,7 +17,7 @@ Eigen::Vector2d unitFromDegrees(double degrees) {
     r -= 90.0;
     ++quadrant;
   }
-  const double rad = r * (std::numbers::pi / 180.0);
+  const double rad = radiansFromDegrees(r);
   const trig::CosSin unit =
       trig::turnedByQuarters(r == 0.0 ? trig::CosSin{1.0, 0.0} : trig::cosSin(rad), quadrant);
   return {unit.cos, unit.sin};
@@ -38,10 +38,16 @@ double wrapRadians(double radians) {
   return r;
 }
 
+double wrapDegrees(double degrees) {
+  if (degrees > -180.0 && degrees <= 180.0) return degrees;
+  double r = std::remainder(degrees, 360.0);  // exact, in [-180, 180]
+  if (r <= -180.0) r += 360.0;
+  return r;
+}
+
 double degreesOf(const Eigen::Vector2d& direction) {
-  double d = trig::atan2(direction.y(), direction.x()) * (180.0 / std::numbers::pi);
-  if (d <= -180.0) d += 360.0;
-  return d;
+  // atan2 lies in [-pi, pi], and pi * (180 / pi) rounds to 180 exactly: only -180 moves.
+  return wrapDegrees(degreesFromRadians(trig::atan2(direction.y(), direction.x())));
 }
 
 }  // namespace cardemo

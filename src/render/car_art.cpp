@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "render/shapes.hpp"
 
@@ -89,7 +90,7 @@ void drawDent(Canvas& canvas, const Local& l, const Dent& dent, const Rgba& body
   if (std::abs(std::abs(mid.x()) - half.x()) < 1e-9) mid.x() -= std::copysign(0.35 * r, mid.x());
   if (std::abs(std::abs(mid.y()) - half.y()) < 1e-9) mid.y() -= std::copysign(0.35 * r, mid.y());
   for (int i = 0; i < kPoints; ++i) {
-    const double a = 2.0 * 3.14159265358979323846 * i / kPoints;
+    const double a = 2.0 * std::numbers::pi * i / kPoints;
     const double k = 0.7 + 0.3 * static_cast<double>(next(s) % 1000u) / 1000.0;
     Eigen::Vector2d p = mid + Eigen::Vector2d{std::cos(a), std::sin(a)} * (r * k);
     p = p.cwiseMax(-half).cwiseMin(half);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "render/shapes.hpp"
 #include "render/world_layer.hpp"
@@ -76,12 +77,12 @@ void drawPatches(Canvas& canvas, const Camera& camera, const Aabb2& area, const 
                               extent.max.cwiseMin(lot->max) == extent.max)) {
         continue;
       }
-      const double ang = static_cast<double>((h >> 40) & 0xff) / 255.0 * 3.14159265358979323846;
+      const double ang = static_cast<double>((h >> 40) & 0xff) / 255.0 * std::numbers::pi;
       const Eigen::Vector2d ax{std::cos(ang), std::sin(ang)};
       const Eigen::Vector2d ay{-ax.y(), ax.x()};
       // An irregular octagon: a worn patch or an oil stain rather than a tile.
       for (int i = 0; i < kSides; ++i) {
-        const double t = 2.0 * 3.14159265358979323846 * i / kSides;
+        const double t = 2.0 * std::numbers::pi * i / kSides;
         const double k = 0.8 + 0.2 * static_cast<double>((h >> (i * 3)) & 7) / 7.0;
         pts[static_cast<std::size_t>(i)] =
             camera.toScreen(c + ax * (std::cos(t) * rx * k) + ay * (std::sin(t) * ry * k));

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "geometry/angle.hpp"
 #include "geometry/trig.hpp"
@@ -17,7 +16,7 @@ ParkingCheck checkParking(const Goal& goal, const Eigen::Vector2d& position,
   const Eigen::Vector2d bay_dir = unitFromDegrees(goal.bay.heading_deg);
   const double cross = bay_dir.x() * direction.y() - bay_dir.y() * direction.x();
   const double dot = bay_dir.dot(direction);
-  double error = std::abs(trig::atan2(cross, dot)) * (180.0 / std::numbers::pi);
+  double error = degreesFromRadians(std::abs(trig::atan2(cross, dot)));
   if (goal.either_direction) error = std::min(error, 180.0 - error);
   c.heading_error_deg = error;
   c.position_ok = c.distance <= goal.position_tolerance;

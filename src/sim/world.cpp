@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numbers>
 #include <span>
 #include <utility>
 
@@ -127,7 +126,7 @@ World::World(Scene scene, const WorldSettings& settings)
       crash_of_(colliders_.size(), 0) {
   crash_window_frames_ = std::llround(settings_.crash_window * settings_.hz);
   car_.position = scene_.player.position;
-  car_.heading = wrapRadians(scene_.player.heading_deg * (std::numbers::pi / 180.0));
+  car_.heading = wrapRadians(radiansFromDegrees(scene_.player.heading_deg));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
   car_.speed = scene_.player.speed;
   ++stats_.broadphase_builds;
@@ -442,8 +441,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
   const double limit = half_min_extent_;
   const double travel = std::sqrt(next.speed * next.speed + next.slip * next.slip) / settings_.hz;
   // The turn within the step (both headings are wrapped, so the raw difference is within 2 pi).
-  double turn = std::abs(next.heading - start.heading);
-  if (turn > std::numbers::pi) turn = 2.0 * std::numbers::pi - turn;
+  const double turn = std::abs(wrapRadians(next.heading - start.heading));
   // The far corners sweep an arc of the half-diagonal times the turn.
   const double arc = turn * half_diagonal_;
   if (travel <= limit && arc <= limit) {
