@@ -6,13 +6,12 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "app/commands.hpp"
+#include "io/asset_lookup.hpp"
 #include "io/replay_runner.hpp"
 #include "io/scene_json.hpp"
-#include "platform/asset_folders.hpp"
 #include "platform/game_window.hpp"
 #include "platform/scene_picker.hpp"
 #include "play/best_scores.hpp"
@@ -36,41 +35,23 @@ struct PlayOptions {
 
 constexpr const char* kDefaultScene = "scenes/parking-lot.json";
 
-// The first assets folder (platform/asset_folders: $CARDEMO_ASSETS, then next to the executable)
-// that holds the bundled lot, or empty.
-std::string findAssetsFolder() {
-  for (const fs::path& folder : assetFolders()) {
-    std::error_code ec;
-    if (fs::is_regular_file(folder / kDefaultScene, ec)) {
-      return folder.lexically_normal().string();
-    }
-  }
-  return {};
-}
-
-// The bundled sounds (assets/sounds), found like the default scene; empty when absent.
+// The folder of the bundled sounds (assets/sounds, io/asset_lookup); empty when absent.
 std::string findSounds() {
-  for (const fs::path& folder : assetFolders()) {
-    std::error_code ec;
-    const fs::path candidate = folder / "sounds";
-    if (fs::is_regular_file(candidate / "engine-1.wav", ec)) {
-      return candidate.lexically_normal().string();
-    }
-  }
-  return {};
+  const std::optional<std::string> engine = findAsset("sounds/engine-1.wav");
+  return engine ? fs::path(*engine).parent_path().string() : std::string();
 }
 
 // Without SCENE or --replay: the picker lists the levels and the free-drive lot, and opens them in
 // one window (Esc in a level returns to it). `window` holds everything but the scene.
 int pickAndPlay(const GameWindowOptions& window) {
-  const std::string assets = findAssetsFolder();
-  if (assets.empty()) {
-    std::fprintf(stderr,
-                 "cardemo play: cannot find the bundled %s next to the executable; give SCENE "
-                 "or set CARDEMO_ASSETS to the assets folder\n",
-                 kDefaultScene);
+  std::string why;
+  const std::optional<std::string> lot = findAsset(kDefaultScene, &why);
+  if (!lot) {
+    std::fprintf(stderr, "cardemo play: %s, or give SCENE\n", why.c_str());
     return 2;
   }
+  // The assets folder that holds scenes/parking-lot.json.
+  const std::string assets = fs::path(*lot).parent_path().parent_path().string();
   std::vector<std::string> warnings;
   const std::vector<LevelEntry> entries = listLevels(assets, warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());

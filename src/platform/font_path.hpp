@@ -6,9 +6,9 @@
 
 namespace cardemo {
 
-/// Path of DejaVuSans.ttf: $CARDEMO_FONT when set, else the bundled assets/fonts (assetFolders),
-/// else Debian's /usr/share/fonts/truetype/dejavu. Returns nullopt
-/// and sets `why` (one sentence saying how to fix it) when no readable font is found.
+/// Path of DejaVuSans.ttf: the bundled assets/fonts (io/asset_lookup), else Debian's
+/// fonts-dejavu-core in /usr/share/fonts/truetype/dejavu. Returns nullopt and sets `why` (one
+/// line saying how to fix it) when neither exists.
 [[nodiscard]] std::optional<std::string> findFontPath(std::string* why = nullptr);
 
 }  // namespace cardemo

@@ -17,7 +17,6 @@
 #include "platform/png_save.hpp"
 #include "platform/sdl_canvas.hpp"
 #include "platform/sdl_window.hpp"
-#include "platform/sprite_path.hpp"
 #include "platform/stop_signal.hpp"
 #include "play/analog_drive.hpp"
 #include "play/fixed_step_clock.hpp"
@@ -293,8 +292,7 @@ GameOutcome runGame(SdlWindow& sdl, const GameWindowOptions& options) {
     return outcome;
   }
   SdlCanvas canvas(renderer);
-  std::string sprite_error;
-  if (const auto dir = findSpriteDir(&sprite_error)) sprite_error = canvas.loadImages(*dir);
+  const std::string sprite_error = canvas.loadSprites();
   if (!sprite_error.empty())
     std::fprintf(stderr, "%s; drawing with vectors\n", sprite_error.c_str());
   int vw = 0, vh = 0;

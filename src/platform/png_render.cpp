@@ -6,7 +6,6 @@
 
 #include "platform/png_save.hpp"
 #include "platform/sdl_canvas.hpp"
-#include "platform/sprite_path.hpp"
 
 namespace cardemo {
 
@@ -26,10 +25,7 @@ std::string renderPng(const World& world, const RenderSettings& settings, const 
     SdlCanvas canvas(renderer.get());
     if (!canvas.error().empty()) return canvas.error();
     if (settings.options.sprites) {
-      std::string why;
-      const std::optional<std::string> dir = findSpriteDir(&why);
-      if (!dir) return why;
-      if (why = canvas.loadImages(*dir); !why.empty()) return why;
+      if (const std::string why = canvas.loadSprites(); !why.empty()) return why;
     }
     Camera camera =
         followCamera(world.carBox(), settings.pixels_per_metre, {settings.width, settings.height});

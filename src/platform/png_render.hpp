@@ -23,9 +23,9 @@ struct RenderSettings {
 
 /// Draws `world` (camera on the player unless `center` or `camera` is set) with the same code as
 /// the window into a software surface and writes it to `out` as PNG, atomically. With
-/// `options.sprites` the sprites are loaded first (findSpriteDir). Needs no display: only SDL2_ttf
-/// is initialised. Returns an empty string on success, else one line saying what went
-/// wrong.
+/// `options.sprites` the sprites are loaded first (SdlCanvas::loadSprites). Needs no display:
+/// only SDL2_ttf is initialised. Returns an empty string on success, else one line saying what
+/// went wrong.
 [[nodiscard]] std::string renderPng(const World& world, const RenderSettings& settings,
                                     const std::string& out);
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/angle.hpp"
+#include "io/asset_lookup.hpp"
 #include "platform/font_path.hpp"
 
 namespace cardemo {
@@ -141,29 +143,31 @@ Eigen::Vector2f SdlCanvas::textSize(std::string_view utf8, int pixel_height) {
   return {static_cast<float>(w), static_cast<float>(h)};
 }
 
-std::string SdlCanvas::loadImages(const std::string& dir) {
-  static constexpr std::array<const char*, kImageCount> kFiles{"car.png", "wheel.png",
-                                                               "ground.png"};
-  std::string missing;
+std::string SdlCanvas::loadSprites() {
+  static constexpr std::array<const char*, kImageCount> kFiles{
+      "sprites/car.png", "sprites/wheel.png", "sprites/ground.png"};
+  std::string first_problem;
+  int problems = 0;
   for (std::size_t i = 0; i < kFiles.size(); ++i) {
     if (images_[i] != nullptr) continue;
-    const std::string path = dir + "/" + kFiles[i];
-    SDL_Surface* surface = IMG_Load(path.c_str());
-    if (surface == nullptr) {
-      missing += (missing.empty() ? "cannot load sprite " : ", ") + path;
-      continue;
+    std::string why;
+    if (const std::optional<std::string> path = findAsset(kFiles[i], &why)) {
+      if (SDL_Surface* surface = IMG_Load(path->c_str())) {
+        images_[i] = SDL_CreateTextureFromSurface(renderer_, surface);
+        SDL_FreeSurface(surface);
+      }
+      if (images_[i] == nullptr) why = *path + ": cannot load the sprite: " + IMG_GetError();
     }
-    images_[i] = SDL_CreateTextureFromSurface(renderer_, surface);
-    SDL_FreeSurface(surface);
     if (images_[i] == nullptr) {
-      missing += (missing.empty() ? "cannot load sprite " : ", ") + path;
+      if (problems++ == 0) first_problem = why;
       continue;
     }
     SDL_SetTextureBlendMode(images_[i], SDL_BLENDMODE_BLEND);
     // Sprites are drawn smaller than they are stored: filter rather than drop texels.
     SDL_SetTextureScaleMode(images_[i], SDL_ScaleModeLinear);
   }
-  return missing;
+  if (problems > 1) first_problem += " (and " + std::to_string(problems - 1) + " more sprites)";
+  return first_problem;
 }
 
 bool SdlCanvas::hasImage(ImageId id) const {
@@ -179,9 +183,8 @@ void SdlCanvas::image(ImageId id, const Eigen::Vector2f& center, float angle,
   SDL_SetTextureAlphaMod(t, tint.a);
   const SDL_FRect dst{center.x() - 0.5f * size.x(), center.y() - 0.5f * size.y(), size.x(),
                       size.y()};
-  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-  SDL_RenderCopyExF(renderer_, t, nullptr, &dst, static_cast<double>(angle) * kDegrees, nullptr,
-                    SDL_FLIP_NONE);
+  SDL_RenderCopyExF(renderer_, t, nullptr, &dst, degreesFromRadians(static_cast<double>(angle)),
+                    nullptr, SDL_FLIP_NONE);
 }
 
 }  // namespace cardemo

@@ -24,10 +24,10 @@ class SdlCanvas : public Canvas {
   SdlCanvas(const SdlCanvas&) = delete;
   SdlCanvas& operator=(const SdlCanvas&) = delete;
 
-  /// Loads the sprites from `dir` (car.png, wheel.png, ground.png, as scripts/make_sprites.py
-  /// writes them). Returns an empty string when all loaded, else one line naming what is missing;
-  /// sprites that did load are used either way, the others fall back to vector drawing.
-  std::string loadImages(const std::string& dir);
+  /// Loads the sprites (assets/sprites/car.png, wheel.png, ground.png, as scripts/make_sprites.py
+  /// writes them, found with findAsset). Returns an empty string when all loaded, else one line
+  /// naming what is missing; sprites that did load are used, the others fall back to vectors.
+  std::string loadSprites();
 
   /// Empty, or why text cannot be drawn (font not found or not loadable).
   [[nodiscard]] const std::string& error() const { return error_; }

@@ -233,16 +233,39 @@ TEST(RenderCommand, SpritesChangeTheImageAndTintTheParkedCars) {
   EXPECT_GE(parked.size(), 5u);
 }
 
+// A copy of cardemo outside the repository has no assets/ next to it or above it: the sprites
+// come from CARDEMO_ASSETS or not at all (nothing is baked in at compile time), and the font falls
+// back to the system's DejaVu.
 TEST(RenderCommand, MissingSpritesAreExit2WithTheReason) {
+  const fs::path bin = scratch("bin");
+  fs::create_directories(bin);
+  const fs::path copy = bin / "cardemo";
+  fs::copy_file(CARDEMO_BINARY, copy, fs::copy_options::overwrite_existing);
   const fs::path out = scratch("none.png");
-  const CommandResult run = render("'" + kLot + "' --sprites --out '" + out.string() + "'");
-  ASSERT_EQ(run.status, 0) << run.err;
-  const CommandResult missing =
-      test::runCardemo("render '" + kLot + "' --sprites --out '" + out.string() + "'", "",
-                       "env -u DISPLAY CARDEMO_SPRITES=/no/such/dir");
+  const std::string args = "render '" + kLot + "' --sprites --out '" + out.string() + "'";
+  const auto run = [&](const std::string& assets) {
+    const fs::path err = scratch("stderr");
+    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY CARDEMO_ASSETS='" + assets +
+                                "' '" + copy.string() + "' " + args + " >/dev/null 2>'" +
+                                err.string() + "'";
+    const int raw = std::system(command.c_str());
+    return CommandResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, "", test::slurp(err)};
+  };
+  const CommandResult found = run(kSource + "/assets");
+  EXPECT_EQ(found.status, 0) << found.err;
+  const CommandResult missing = run("/no/such/dir");
   EXPECT_EQ(missing.status, 2);
-  EXPECT_NE(missing.err.find("CARDEMO_SPRITES=/no/such/dir"), std::string::npos) << missing.err;
+  EXPECT_EQ(missing.err.rfind("sprites/car.png: not found", 0), 0u) << missing.err;
+  EXPECT_NE(missing.err.find("/no/such/dir"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find((bin / "assets").string()), std::string::npos) << missing.err;
   EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+  const fs::path err = scratch("stderr");
+  const int raw =
+      std::system(("env -u DISPLAY CARDEMO_ASSETS=/no/such/dir '" + copy.string() + "' render '" +
+                   kLot + "' --out '" + out.string() + "' 2>'" + err.string() + "'")
+                      .c_str());
+  EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, 0)
+      << "without --sprites only the font is needed, and the system's serves: " << test::slurp(err);
 }
 
 TEST(RenderCommand, RigKeepsThePictureInsideTheWalls) {
