@@ -55,7 +55,7 @@ int pickAndPlay(const GameWindowOptions& window) {
   std::vector<std::string> warnings;
   const std::vector<LevelEntry> entries = listLevels(assets, warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
-  return runPickerAndLevels(entries, window, bestScoresPath());
+  return runPickerAndLevels(entries, window);
 }
 
 int runPlayCommand(const PlayOptions& options) {
@@ -77,12 +77,13 @@ int runPlayCommand(const PlayOptions& options) {
     }
   }
   GameWindowOptions window;
-  window.json_path = options.json_path;
+  window.play.json_path = options.json_path;
+  window.play.replay_path = options.replay_path;
+  window.play.best_scores_path = bestScoresPath();
+  window.play.muted = options.mute;
   window.progress = options.progress;
-  window.replay_path = options.replay_path;
-  window.mute = options.mute;
   window.sounds_dir = findSounds();
-  SessionConfig& session = window.session;
+  SessionConfig& session = window.play.session;
   session.settings.hz = options.hz;
   session.record_path = options.record_path;
 

@@ -3,7 +3,6 @@
 /// header is SDL-free.
 
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "platform/game_window.hpp"
@@ -21,11 +20,11 @@ class SdlWindow;
                                                 const BestScores& best, int selected);
 
 /// The picker, then the level chosen, then the picker again (Esc in a level) or the next level (N
-/// once parked), all in one window, until Esc in the picker, window close or a stop signal.
-/// `base` is each game's options but the scene; the best scores are read from `best_path` each
-/// time the picker opens, and attempts are numbered across games so that --record keeps each one.
-/// Returns the exit status as runGameWindow() does.
+/// once parked), all in one window, until Esc in the picker, window close or a stop signal
+/// (play/picker_flow decides which comes next). `base` is each game's options but the scene; the
+/// best scores are read from `base.play.best_scores_path` each time the picker opens. Returns the
+/// exit status as runGameWindow() does.
 [[nodiscard]] int runPickerAndLevels(const std::vector<LevelEntry>& entries,
-                                     const GameWindowOptions& base, const std::string& best_path);
+                                     const GameWindowOptions& base);
 
 }  // namespace cardemo
