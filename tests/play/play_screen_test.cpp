@@ -46,6 +46,10 @@ TEST(PlayScreen, PauseHoldsTheClock) {
   EXPECT_EQ(resumed.steps, 0);
   EXPECT_FALSE(resumed.draw.paused);
   EXPECT_EQ(d.frame({}, 2 * kStep).steps, 2);
+  // Half a step while paused is not added to half a step after it.
+  (void)d.act(K::kPause, 0.5 * kStep);
+  EXPECT_EQ(d.act(K::kPause, 0.5 * kStep).steps, 0);
+  EXPECT_EQ(d.frame({}, 0.5 * kStep).steps, 1);
 }
 
 TEST(PlayScreen, HelpHoldsTheClockAndShowsPaused) {

@@ -115,6 +115,25 @@ TEST(PlayScreenWrites, ParkingEndsTheRunWithSummaryChimeAndRecording) {
   EXPECT_EQ(d.screen().takePublished(), std::vector<std::string>{record.string()});
 }
 
+TEST(PlayScreenWrites, TimeUpEndsTheRunWithASummaryButNoChime) {
+  const fs::path dir = testing::freshTempDir("screen_timeup");
+  const fs::path json = dir / "summary.json";
+  Scene scene = test::rollInLevel();
+  scene.player.speed = 0.0;
+  scene.goal->bay.center = {5.0, 0.0};  // never reached
+  scene.goal->time_limit = 0.1;
+  PlayScreenConfig config = screenConfig(std::move(scene));
+  config.json_path = json.string();
+  ScreenDriver d(std::move(config));
+  bool chimed = false;
+  for (int i = 0; i < 100 && !d.ended(); ++i) chimed = chimed || d.frame({}, kStep).chime;
+  ASSERT_TRUE(d.screen().level().challenge()->timedOut());
+  EXPECT_FALSE(chimed);
+  ASSERT_TRUE(fs::exists(json));
+  EXPECT_TRUE(readJson(json).at("parked").is_null());
+  EXPECT_EQ(d.frame({}, kStep).draw.goal->keys, "Enter retry    Esc quit");
+}
+
 TEST(PlayScreenWrites, AReplayWatchedToParkedSetsNoBestScore) {
   const fs::path dir = testing::freshTempDir("screen_best");
   const fs::path best = dir / "best.json";
