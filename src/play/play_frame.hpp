@@ -25,8 +25,8 @@ struct PlayInput {
   Eigen::Vector2i viewport{1280, 720};  ///< Drawable size now, pixels.
 };
 
-/// What the platform does with one frame. When `exit` is not kStay nothing else is set: the
-/// platform leaves the level and calls PlayScreen::finish().
+/// What the platform does with one frame. When `exit` is not kStay there is nothing to draw or
+/// play: the platform leaves the level and calls PlayScreen::finish().
 struct PlayFrame {
   LevelExit exit = LevelExit::kStay;  ///< kStay, or where the player asked to go.
   int steps = 0;                      ///< Fixed steps simulated in this frame.

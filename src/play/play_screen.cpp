@@ -1,6 +1,7 @@
 #include "play/play_screen.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <utility>
 
 #include "io/atomic_file.hpp"
@@ -33,6 +34,7 @@ PlayScreen::PlayScreen(PlayScreenConfig config)
 }
 
 const PlayFrame& PlayScreen::frame(const PlayInput& input) {
+  assert(ready_);
   out_.exit = LevelExit::kStay;
   out_.steps = 0;
   out_.chime = false;
