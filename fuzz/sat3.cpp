@@ -22,7 +22,7 @@
 #include "compare/exact/exact_sat.hpp"
 #include "fuzz_check.hpp"
 #include "geometry/batch_path.hpp"
-#include "kernels/obb3_batch.hpp"
+#include "lab/kernels/obb3_batch.hpp"
 #include "shapes3.hpp"
 
 namespace cardemo::fuzz {

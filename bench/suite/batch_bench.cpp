@@ -12,8 +12,8 @@
 #include "bench_registry.hpp"
 #include "geometry/batch_path.hpp"
 #include "geometry/sat_obb2.hpp"
-#include "kernels/obb2_batch.hpp"
-#include "kernels/obb3_batch.hpp"
+#include "lab/kernels/obb2_batch.hpp"
+#include "lab/kernels/obb3_batch.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
 #include "compare/box2d/box2d_shapes.hpp"

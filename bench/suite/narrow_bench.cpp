@@ -12,8 +12,8 @@
 #include "geometry/obb3.hpp"
 #include "geometry/polygon_store.hpp"
 #include "geometry/sat_obb2.hpp"
-#include "kernels/manifold2.hpp"
-#include "kernels/manifold2_batch.hpp"
+#include "lab/kernels/manifold2.hpp"
+#include "lab/kernels/manifold2_batch.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
 #include "compare/box2d/box2d_shapes.hpp"

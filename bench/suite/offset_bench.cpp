@@ -10,7 +10,7 @@
 
 #include "bench_registry.hpp"
 #include "geometry/sat_obb2.hpp"
-#include "kernels/manifold2.hpp"
+#include "lab/kernels/manifold2.hpp"
 
 #if defined(CARDEMO_HAVE_COMPARE)
 #include "compare/box2d/box2d_shapes.hpp"

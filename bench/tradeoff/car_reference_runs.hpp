@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/car_closed_form.hpp"
+#include "lab/kernels/car_closed_form.hpp"
 #include "sim/car.hpp"
 
 namespace cardemo::tradeoff {

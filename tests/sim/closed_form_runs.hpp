@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "kernels/car_closed_form.hpp"
+#include "lab/kernels/car_closed_form.hpp"
 #include "sim/car.hpp"
 
 namespace cardemo::test {

@@ -20,7 +20,7 @@
 #include "geometry/obb2.hpp"
 #include "geometry/obb3.hpp"
 #include "geometry/sat_obb2.hpp"
-#include "kernels/manifold2.hpp"
+#include "lab/kernels/manifold2.hpp"
 #include "stress_scale.hpp"
 
 namespace cardemo::stress {

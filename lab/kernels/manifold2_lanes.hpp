@@ -16,7 +16,7 @@
 // andNot(a, b) = b where a is not set; negateWhere(m, x); onlyWhere(m, x) (x where m is set, else
 // +0) and onlyWhereNot(m, x); flipSign(x, sign_bits); storeInt32(int32_t*, L).
 
-#include "kernels/batch_kernels.hpp"
+#include "lab/kernels/batch_kernels.hpp"
 
 // batch_kernels.hpp's attribute, for the same reason: inlined into the driver loop.
 #define CARDEMO_MANIFOLD_INLINE [[gnu::always_inline]] inline

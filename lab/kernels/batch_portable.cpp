@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "kernels/batch_kernels.hpp"
+#include "lab/kernels/batch_kernels.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/aligned_allocator.hpp"
-#include "kernels/batch_entry.hpp"
-#include "kernels/manifold2.hpp"
-#include "kernels/obb2_batch.hpp"
+#include "lab/geometry/aligned_allocator.hpp"
+#include "lab/kernels/batch_entry.hpp"
+#include "lab/kernels/manifold2.hpp"
+#include "lab/kernels/obb2_batch.hpp"
 
 namespace cardemo {
 

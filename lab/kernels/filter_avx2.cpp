@@ -13,9 +13,9 @@
 
 #include <immintrin.h>
 
-#include "kernels/batch2_filter.hpp"
-#include "kernels/batch3_filter.hpp"
-#include "kernels/box_fields.hpp"
+#include "lab/kernels/batch2_filter.hpp"
+#include "lab/kernels/batch3_filter.hpp"
+#include "lab/kernels/box_fields.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -17,7 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "kernels/filter_run.hpp"
+#include "lab/kernels/filter_run.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -20,9 +20,9 @@
 #include <type_traits>
 #include <utility>
 
-#include "kernels/batch_entry.hpp"
-#include "kernels/box_fields.hpp"
-#include "kernels/filter_run.hpp"
+#include "lab/kernels/batch_entry.hpp"
+#include "lab/kernels/box_fields.hpp"
+#include "lab/kernels/filter_run.hpp"
 
 // Every kernel is inlined into its driver loop, so the query box's broadcast values are loaded
 // once per call rather than once per lane group (GCC and Clang both honour the attribute).

@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-#include "kernels/batch_entry.hpp"
+#include "lab/kernels/batch_entry.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "kernels/manifold2.hpp"
+#include "lab/kernels/manifold2.hpp"
 
 namespace cardemo::testing {
 

@@ -1,7 +1,7 @@
 /// The batched manifold against manifoldObb2, bit for bit on every dispatch path, over seeded
 /// random pairs (near the origin and 1e7 m out, every tail length) and named edge cases.
 
-#include "kernels/manifold2_batch.hpp"
+#include "lab/kernels/manifold2_batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "../geometry/random_cases2.hpp"
-#include "../support/batch_paths.hpp"
-#include "../support/random_class.hpp"
 #include "geometry/batch_path.hpp"
 #include "manifold_pairs.hpp"
+#include "tests/geometry/random_cases2.hpp"
+#include "tests/support/batch_paths.hpp"
+#include "tests/support/random_class.hpp"
 
 namespace cardemo {
 namespace {

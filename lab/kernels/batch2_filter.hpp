@@ -28,8 +28,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "kernels/batch_entry.hpp"
-#include "kernels/filter_run.hpp"
+#include "lab/kernels/batch_entry.hpp"
+#include "lab/kernels/filter_run.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

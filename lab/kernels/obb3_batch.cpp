@@ -1,4 +1,4 @@
-#include "kernels/obb3_batch.hpp"
+#include "lab/kernels/obb3_batch.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "geometry/batch_path.hpp"
-#include "kernels/filter_copy.hpp"
+#include "lab/kernels/filter_copy.hpp"
 
 namespace cardemo {
 namespace {

@@ -1,7 +1,7 @@
 /// Batch 2D SAT (one box against many) against the scalar functions (bit for bit), the exact
 /// oracle, and itself on both dispatch paths, over seeded random batches and named edge cases.
 
-#include "kernels/obb2_batch.hpp"
+#include "lab/kernels/obb2_batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,12 +11,12 @@
 #include <numbers>
 #include <vector>
 
-#include "../geometry/random_cases2.hpp"
-#include "../support/batch_paths.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/batch_path.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "tests/geometry/random_cases2.hpp"
+#include "tests/support/batch_paths.hpp"
 
 namespace cardemo {
 namespace {

@@ -9,10 +9,10 @@
 #include <array>
 #include <cmath>
 
-#include "../geometry/random_cases2.hpp"
-#include "kernels/manifold2.hpp"
+#include "lab/kernels/manifold2.hpp"
 #include "manifold_margin.hpp"
 #include "manifold_pairs.hpp"
+#include "tests/geometry/random_cases2.hpp"
 
 namespace cardemo {
 namespace {

@@ -1,13 +1,13 @@
-#include "kernels/manifold2.hpp"
+#include "lab/kernels/manifold2.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "../geometry/random_cases2.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/sat_obb2.hpp"
 #include "manifold_margin.hpp"
+#include "tests/geometry/random_cases2.hpp"
 
 namespace cardemo {
 namespace {

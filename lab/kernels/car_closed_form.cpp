@@ -1,4 +1,4 @@
-#include "kernels/car_closed_form.hpp"
+#include "lab/kernels/car_closed_form.hpp"
 
 #include <algorithm>
 #include <cassert>

@@ -1,13 +1,13 @@
 // The closed forms themselves, checked against the ODE they claim to solve (central differences),
 // their limits and special cases, and against RK4 run at a very fine step.
-#include "kernels/car_closed_form.hpp"
+#include "lab/kernels/car_closed_form.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "../sim/closed_form_runs.hpp"
+#include "tests/sim/closed_form_runs.hpp"
 
 namespace cardemo {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <utility>
 
-#include "../geometry/random_cases2.hpp"
 #include "geometry/obb2.hpp"
+#include "tests/geometry/random_cases2.hpp"
 
 namespace cardemo::testing {
 

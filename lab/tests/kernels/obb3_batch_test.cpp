@@ -1,7 +1,7 @@
 /// Batch 3D SAT (one box against many) against the exact oracle, the scalar collideObb3, and
 /// itself on both dispatch paths, over the seeded classes of random_cases3.hpp.
 
-#include "kernels/obb3_batch.hpp"
+#include "lab/kernels/obb3_batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "../geometry/random_cases3.hpp"
-#include "../support/batch_paths.hpp"
-#include "../support/random_class.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/batch_path.hpp"
+#include "tests/geometry/random_cases3.hpp"
+#include "tests/support/batch_paths.hpp"
+#include "tests/support/random_class.hpp"
 
 namespace cardemo {
 namespace {

@@ -13,8 +13,8 @@
 
 #include <immintrin.h>
 
-#include "kernels/batch_kernels.hpp"
-#include "kernels/manifold2_lanes.hpp"
+#include "lab/kernels/batch_kernels.hpp"
+#include "lab/kernels/manifold2_lanes.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -14,12 +14,12 @@
 
 #include <immintrin.h>
 
-#include "kernels/batch2_filter.hpp"
-#include "kernels/batch3_filter.hpp"
-#include "kernels/batch_kernels.hpp"
-#include "kernels/box_fields.hpp"
-#include "kernels/filter_run_avx512.hpp"
-#include "kernels/manifold2_lanes.hpp"
+#include "lab/kernels/batch2_filter.hpp"
+#include "lab/kernels/batch3_filter.hpp"
+#include "lab/kernels/batch_kernels.hpp"
+#include "lab/kernels/box_fields.hpp"
+#include "lab/kernels/filter_run_avx512.hpp"
+#include "lab/kernels/manifold2_lanes.hpp"
 
 namespace cardemo::batch_detail {
 namespace {

@@ -1,4 +1,4 @@
-#include "kernels/manifold2_batch.hpp"
+#include "lab/kernels/manifold2_batch.hpp"
 
 #include <cassert>
 

@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "geometry/aligned_allocator.hpp"
 #include "geometry/obb3.hpp"
-#include "kernels/batch_entry.hpp"
+#include "lab/geometry/aligned_allocator.hpp"
+#include "lab/kernels/batch_entry.hpp"
 
 namespace cardemo {
 

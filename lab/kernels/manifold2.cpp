@@ -1,4 +1,4 @@
-#include "kernels/manifold2.hpp"
+#include "lab/kernels/manifold2.hpp"
 
 #include <cassert>
 #include <cmath>
