@@ -1,6 +1,6 @@
 // Fuzz target: the 2D separating-axis routines (collideObb2, overlapObb2, collidePolygons,
 // collideObbPolygon, collidePolygonObb) against the exact GMP oracle (src/compare/exact), in both
-// argument orders.
+// argument orders; the lab's quadrilateral SAT against collidePolygons, bit for bit.
 //
 // Input: byte 0 picks the routine (bits 0-1: box/box, polygon/polygon, box/polygon, polygon/box)
 // and the domain (bit 7: "wild"); then shape A, shape B and B's placement (shapes2.hpp).
@@ -8,6 +8,7 @@
 // more than 2e-6 m from the exact value, a normal that is not unit or does not realise `sep` from
 // A towards B, `hit` not equal to `sep <= 0`, or NaN/inf. Outside it: no NaN/inf, no crash.
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include "compare/exact/exact_sat.hpp"
 #include "fuzz_check.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "lab/geometry/collide_quads.hpp"
 #include "shapes2.hpp"
 
 namespace cardemo::fuzz {
@@ -79,6 +81,15 @@ void check(const Shape2& a, const Shape2& b) {
     static_cast<void>(overlapObb2(b.box, a.box));
   }
   if (!a.in_domain || !b.in_domain) return;
+  if (!a.is_box && !b.is_box) {
+    // The lab's quadrilateral SAT (lab/geometry/collide_quads) gives collidePolygons' bits.
+    const SatResult2 q = collideQuads(a.poly, b.poly);
+    require(q.hit == ab.hit &&
+                std::bit_cast<std::uint64_t>(q.separation) ==
+                    std::bit_cast<std::uint64_t>(ab.separation) &&
+                q.normal == ab.normal,
+            "collideQuads differs from collidePolygons" + context(a, b, ab));
+  }
   const exact::ExactResult ex = oracle(a, b);
   requireAccurate(a, b, ab, ex);
   requireAccurate(b, a, ba, ex);

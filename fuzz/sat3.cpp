@@ -1,6 +1,6 @@
 // Fuzz target: the 3D separating-axis routines (collideObb3, overlapObb3) against the exact GMP
 // oracle (src/compare/exact), in both argument orders, and the batch kernels (overlapObb3Batch,
-// separationObb3Batch) on the same pair on every batch path.
+// separationObb3Batch) and the lab's one-pair vector forms on the same pair on every batch path.
 //
 // Input: byte 0 picks the domain (bit 7: "wild"); then A's centre, rotation and size, B's rotation
 // (often nearly or exactly parallel to A's) and size, and B's placement (shapes3.hpp).
@@ -22,6 +22,7 @@
 #include "compare/exact/exact_sat.hpp"
 #include "fuzz_check.hpp"
 #include "geometry/batch_path.hpp"
+#include "lab/geometry/obb3_paths.hpp"
 #include "lab/kernels/obb3_batch.hpp"
 #include "shapes3.hpp"
 
@@ -86,6 +87,14 @@ void requireBatchAgrees(const Obb3& a, const Obb3& b, bool checked) {
     static_cast<void>(overlapObb3Batch(a, many, hit));
     separationObb3Batch(a, many, sep);
     if (!checked) continue;
+    // The lab's one-pair vector forms give src's bits on every path.
+    const SatResult3 one = collideObb3OnPath(a, b), want = collideObb3(a, b);
+    require(one.axis_index == want.axis_index &&
+                std::bit_cast<std::uint64_t>(one.separation) ==
+                    std::bit_cast<std::uint64_t>(want.separation) &&
+                one.normal == want.normal && overlapObb3OnPath(a, b) == overlapObb3(a, b),
+            std::string("collideObb3OnPath differs from collideObb3 on the ") +
+                batchPathName(path) + " path\n  A: " + describe(a) + "\n  B: " + describe(b));
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       const std::string where = std::string(" on the ") + batchPathName(path) + " path, box " +
                                 std::to_string(i) + "\n  A: " + describe(a) +

@@ -12,6 +12,7 @@
 #include "bench_registry.hpp"
 #include "geometry/batch_path.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "lab/geometry/kernel_paths.hpp"
 #include "lab/kernels/obb2_batch.hpp"
 #include "lab/kernels/obb3_batch.hpp"
 
@@ -56,7 +57,7 @@ void registerSize(std::size_t n) {
   };
   for (const BatchPath path : {BatchPath::kAvx512, BatchPath::kAvx2, BatchPath::kPortable}) {
     // Only the paths this CPU has: a skipped benchmark prints the smoke test's failure pattern.
-    if (!batchPathAvailable(path)) continue;
+    if (!batchPathAvailable(path) || !kernelsBuiltFor(path)) continue;
     const char* engine = batchPathName(path);
     benchmark::RegisterBenchmark(
         name("overlapObb2", engine).c_str(), [n, path](benchmark::State& s) {

@@ -10,8 +10,10 @@
 #include "bench_registry.hpp"
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb3.hpp"
-#include "geometry/polygon_store.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "lab/geometry/collide_quads.hpp"
+#include "lab/geometry/obb3_paths.hpp"
+#include "lab/geometry/polygon_store.hpp"
 #include "lab/kernels/manifold2.hpp"
 #include "lab/kernels/manifold2_batch.hpp"
 
@@ -144,6 +146,22 @@ void registerSize(std::size_t n) {
         overPairs(s, n, pairSet2(n).overlap_share,
                   [&p](std::size_t i) { return collidePolygons(p.a[i], p.b[i]).separation; });
       });
+  // The lab's variants of the same queries (lab/geometry), on the widest batch path: the same bits.
+  benchmark::RegisterBenchmark(name("collidePolygons", "lab").c_str(), [n](benchmark::State& s) {
+    const PolygonPairs& p = polygonPairs(n);
+    overPairs(s, n, pairSet2(n).overlap_share,
+              [&p](std::size_t i) { return collideQuads(p.a[i], p.b[i]).separation; });
+  });
+  benchmark::RegisterBenchmark(name("overlapObb3", "lab").c_str(), [n](benchmark::State& s) {
+    const PairSet3& p = pairSet3(n);
+    overPairs(s, n, p.overlap_share,
+              [&p](std::size_t i) { return overlapObb3OnPath(p.a[i], p.b[i]) ? 1.0 : 0.0; });
+  });
+  benchmark::RegisterBenchmark(name("collideObb3", "lab").c_str(), [n](benchmark::State& s) {
+    const PairSet3& p = pairSet3(n);
+    overPairs(s, n, p.overlap_share,
+              [&p](std::size_t i) { return collideObb3OnPath(p.a[i], p.b[i]).separation; });
+  });
   benchmark::RegisterBenchmark(name("overlapObb3", "cardemo").c_str(), [n](benchmark::State& s) {
     const PairSet3& p = pairSet3(n);
     overPairs(s, n, p.overlap_share,

@@ -1,5 +1,5 @@
 // The batch kernels four pairs at a time with AVX2 (+ FMA for the explicit fma of the 3D edge
-// axes). Built with -mavx2 -mfma (CMakeLists.txt) and called only after batchPathAvailable says
+// axes). Built with -mavx2 -mfma (lab/CMakeLists.txt) and called only after batchPathAvailable says
 // the CPU has both, so the default build still runs on any x86-64.
 //
 // Includes nothing but the intrinsics and the kernel header (no Eigen, no <cmath>): an inline
@@ -8,7 +8,7 @@
 
 #if defined(CARDEMO_BATCH_AVX2)
 #if !defined(__AVX2__) || !defined(__FMA__)
-#error "batch_avx2.cpp needs -mavx2 -mfma (set in CMakeLists.txt)"
+#error "batch_avx2.cpp needs -mavx2 -mfma (set in lab/CMakeLists.txt)"
 #endif
 
 #include <immintrin.h>

@@ -1,15 +1,15 @@
 // The batch kernels with AVX-512F: the 2D boolean SAT through the float pre-filter, sixteen pairs
 // per instruction, and every double kernel eight pairs per instruction (the 2D SAT with separation
 // and normal, the 2D boolean SAT for the boxes the filter leaves undecided, the 2D contact
-// manifold, and both 3D kernels with their A-frame filter). Built with -mavx512f (CMakeLists.txt)
-// and called only after batchPathAvailable says the CPU has it.
+// manifold, and both 3D kernels with their A-frame filter). Built with -mavx512f
+// (lab/CMakeLists.txt) and called only after batchPathAvailable says the CPU has it.
 //
 // Includes nothing but the intrinsics and the kernel headers, for the reason given in
 // batch_avx2.cpp.
 
 #if defined(CARDEMO_BATCH_AVX512)
 #if !defined(__AVX512F__)
-#error "batch_avx512.cpp needs -mavx512f (set in CMakeLists.txt)"
+#error "batch_avx512.cpp needs -mavx512f (set in lab/CMakeLists.txt)"
 #endif
 
 #include <immintrin.h>

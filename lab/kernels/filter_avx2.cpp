@@ -1,14 +1,14 @@
 // The 2D and 3D boolean batch SATs with their float pre-filters, eight pairs per AVX2 instruction;
 // the pairs they leave undecided go to the AVX2 double kernels (batch_avx2.cpp): with their lane
 // group in 2D, one by one in 3D (filter_run.hpp). Built with -mavx2 -mfma
-// (CMakeLists.txt) and called only after batchPathAvailable says the CPU has both.
+// (lab/CMakeLists.txt) and called only after batchPathAvailable says the CPU has both.
 //
 // Includes nothing but the intrinsics and the kernel header, for the reason given in
 // batch_avx2.cpp.
 
 #if defined(CARDEMO_BATCH_AVX2)
 #if !defined(__AVX2__) || !defined(__FMA__)
-#error "filter_avx2.cpp needs -mavx2 -mfma (set in CMakeLists.txt)"
+#error "filter_avx2.cpp needs -mavx2 -mfma (set in lab/CMakeLists.txt)"
 #endif
 
 #include <immintrin.h>

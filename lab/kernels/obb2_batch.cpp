@@ -160,7 +160,8 @@ void collideObb2Batch(const Obb2& a, const Obb2Batch& many, std::span<double> se
   }
 #endif
 #if defined(CARDEMO_BATCH_AVX2)
-  if (batchPath() == BatchPath::kAvx2) {
+  // Also on kAvx512 when the lab is built without its AVX-512 kernels.
+  if (batchPath() != BatchPath::kPortable) {
     batch_detail::collide2Avx2(one, many.arrays(), 0, many.size(), out);
     return;
   }

@@ -29,13 +29,13 @@ bool cpuCanRun(BatchPath path) {
 #if defined(__x86_64__) || defined(__i386__)
   // The AVX2 kernels also use FMA (the error-free products of the 3D edge axes, the float
   // pre-filter); on the AVX-512 path the grid scan keeps its AVX2 version, so it needs all three,
-  // and the one-pair 3D and quadrilateral kernels are built with AVX-512VL too.
+  // and the lab's one-pair 3D and quadrilateral kernels are built with AVX-512VL too. The path
+  // describes the CPU: a lab built without its AVX-512 kernels (lab/CMakeLists.txt) runs their
+  // AVX2 versions on it.
   // GCC's check includes the operating system's support for the wider registers (XGETBV).
   const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #if defined(CARDEMO_BATCH_AVX2)
   if (path == BatchPath::kAvx2) return avx2;
-#endif
-#if defined(CARDEMO_BATCH_AVX2) && defined(CARDEMO_BATCH_AVX512)
   if (path == BatchPath::kAvx512) {
     return avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
   }

@@ -13,9 +13,9 @@
 #include <emmintrin.h>
 #endif
 
-#include "geometry/batch_path.hpp"
 #include "geometry/finite.hpp"
-#include "geometry/obb3_lanes.hpp"
+#include "geometry/obb3_edge_bound.hpp"
+#include "geometry/obb3_normal.hpp"
 
 namespace cardemo {
 
@@ -215,32 +215,6 @@ const double* numbersOf(const Obb3& box) {
                                 std::max(a.frameDefect(), b.frameDefect()));
 }
 
-// collideObb3's vector kernel (obb3_vector_kernels.hpp, largestGapVector) compares candidate
-// separations without roots (the batch kernels' Candidate, batch_kernels.hpp): gap / sqrt(length2)
-// is carried as gap, length2 and square = gap |gap|, and as z -> z|z| is increasing, y's separation
-// is the larger iff y.square * x.length2 > x.square * y.length2. A face enters with length2 = 1.
-// One root and one division remain, for the winner only, which reports gap / sqrt(length2) as
-// before.
-//
-// Range: on this path every edge gap has |gap| > bound >= 2^-49 scale, and 2^-14 <= min_length2
-// < length2 < 2.01 (phi <= 2^-30 keeps |r_kj| <= 1 + 2^-29); every gap, face or edge, is at most
-// 4 scale in magnitude (|t_k| and |along| at most 2.01 |d|_1, the radii at most 1.01 times the
-// half extents' sum). So for 2^-400 <= scale <= 2^400 no product exceeds 2^6 scale^2 <= 2^806,
-// and an edge's is at least 2^-112 scale^2 >= 2^-912, a normal number: each product is within
-// 2^-52 (relative) of its exact value. A face's product that is not a normal number (|gap| below
-// about 2^-504) is below 2^-1022, far from the edge product it is compared with. The boxes' domain
-// (kMaxCoordinate, half extents down to zero) reaches beyond that range: such a pair takes the
-// edge-by-edge loop (obb3_detail::kRootFreeMinScale and kRootFreeMaxScale).
-
-// A step of the comparison is certain when its two products differ by more than 2^-48 of the
-// first (a sign apart included): the exact separations then differ by more than 12 u (u = 2^-53),
-// and gap / sqrt(length2), within 2 u of its exact value, orders the two the same way, strictly.
-// When every step is certain, the winner is the axis that normalising every gap and scanning in
-// axis order picks (the tournament's runs are consecutive, and comparisons of doubles are
-// transitive), bit for bit; otherwise the kernel normalises and scans too. So its result is always
-// that of the SSE2 path below (largestNormalised), near ties included: the root-free pick pays
-// for itself only where a blend instruction selects (SSE2 has none).
-
 // Edge axes a_i x b_j in A's frame, gap times axis length and squared length: lane i of gap[j] and
 // of length2[j] is edge axis (i, j), e = 3i + j.
 struct FastEdges {
@@ -272,32 +246,6 @@ struct FastEdges {
     out.length2[j] = r1 * r1 + r2 * r2;
   });
   return out;
-}
-
-// -v if `negate`, else v, without a branch (the sign bits flipped; -v has the same bits): a pair's
-// random heading makes the sign unpredictable.
-[[gnu::always_inline]] inline Eigen::Vector3d negatedIf(bool negate, const Eigen::Vector3d& v) {
-  const std::uint64_t flip = static_cast<std::uint64_t>(negate) << 63;
-  Eigen::Vector3d out;
-  for (int k = 0; k < 3; ++k) {
-    out[k] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v[k]) ^ flip);
-  }
-  return out;
-}
-
-// The world-frame unit axis of fast edge axis 6 + 3i + j, pointing from A towards B. Pose: a Pose3
-// or StoredPose.
-template <class Pose>
-Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int axis) {
-  // The indices from tables and the sign by negatedIf: no branch on the axis or on the sign, which
-  // a pair's random heading makes unpredictable.
-  static constexpr unsigned char kJ[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
-  static constexpr unsigned char kI1[9] = {1, 1, 1, 2, 2, 2, 0, 0, 0};
-  static constexpr unsigned char kI2[9] = {2, 2, 2, 0, 0, 0, 1, 1, 1};
-  const unsigned e = static_cast<unsigned>(axis - 6), j = kJ[e], i1 = kI1[e], i2 = kI2[e];
-  const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
-  const double along = p.tk(i2) * p.r(i1, j) - p.tk(i1) * p.r(i2, j);
-  return negatedIf(along < 0.0, n.normalized());
 }
 
 // Edge-edge axis a_i x b_j.
@@ -376,33 +324,13 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   });
 }
 
-// The pose entries largestGapAvx2 stores, as a Pose3 reads them.
-struct StoredPose {
-  const obb3_detail::LargestGap& g;
-  [[nodiscard]] double r(int k, int j) const { return g.col[j][k]; }
-  [[nodiscard]] double tk(int k) const { return g.t[k]; }
-  [[nodiscard]] double tbk(int j) const { return g.tb[j]; }
-};
-
-// The normal of the winning axis, pointing from A towards B: a fast edge axis, or a stored column
-// whose sign the pose's t (A's faces) or tb (B's faces) gives.
-template <class Pose>
-Eigen::Vector3d winningNormal(const Obb3& a, const Obb3& b, const Pose& p, int axis) {
-  if (axis >= 6) return fastEdgeNormal(a, p, axis);
-  if (axis < 3) {
-    const Eigen::Vector3d n = a.rotation().col(axis);
-    return p.tk(axis) < 0.0 ? Eigen::Vector3d(-n) : n;
-  }
-  const Eigen::Vector3d n = b.rotation().col(axis - 3);
-  return p.tbk(axis - 3) < 0.0 ? Eigen::Vector3d(-n) : n;
-}
-
 }  // namespace
 
 namespace {
 
-// collideObb3 on the SSE2 path, also where some edge gap lies within the bound. Not inlined, so
-// that the AVX2 path's caller keeps a small frame.
+// collideObb3 with two SSE2 registers per 3-vector. lab/geometry/obb3_paths.cpp calls collideObb3
+// where its AVX2 kernel leaves a pair undecided; not inlined, so that its caller keeps a small
+// frame.
 [[gnu::noinline]] SatResult3 collideSse2(const Obb3& a, const Obb3& b) {
   const Pose3 p = relativePose(a, b);
   SatResult3 r;
@@ -435,7 +363,7 @@ namespace {
     r.separation = best;
     r.axis_index = best_index;
     if (best_index >= 6) {
-      r.normal = fastEdgeNormal(a, p, best_index);
+      r.normal = obb3_detail::fastEdgeNormal(a, p, best_index);
       r.hit = best <= 0.0;
       assert(isFinite(r));
       return r;
@@ -468,7 +396,7 @@ namespace {
     }
     if (fast_winner || accurate_winner) {
       if (fast_winner) {
-        r.normal = fastEdgeNormal(a, p, r.axis_index);
+        r.normal = obb3_detail::fastEdgeNormal(a, p, r.axis_index);
       }
       r.hit = r.separation <= 0.0;
       assert(isFinite(r));
@@ -476,14 +404,13 @@ namespace {
     }
   }
   // A face axis wins.
-  r.normal = winningNormal(a, b, p, r.axis_index);
+  r.normal = obb3_detail::winningNormal(a, b, p, r.axis_index);
   r.hit = r.separation <= 0.0;
   assert(isFinite(r));
   return r;
 }
 
-// overlapObb3 on the SSE2 path, also where some edge gap lies within the bound. Not inlined, so
-// that the AVX2 path's caller keeps a small frame.
+// overlapObb3 with two SSE2 registers per 3-vector; not inlined, as collideSse2.
 [[gnu::noinline]] bool overlapSse2(const Obb3& a, const Obb3& b) {
   const Pose3 p = relativePose(a, b);
   const double face = std::max(
@@ -505,63 +432,15 @@ namespace {
   return true;
 }
 
-#if defined(CARDEMO_BATCH_AVX2)
-// The vector kernels for a path other than the portable one: on kAvx512 their AVX-512VL build
-// (obb3_vector_kernels.hpp; the same bits).
-obb3_detail::Verdict overlapOnPath(BatchPath path, const double* a, const double* b, double phi) {
-#if defined(CARDEMO_BATCH_AVX512)
-  if (path == BatchPath::kAvx512) return obb3_detail::overlapAvx512(a, b, phi);
-#endif
-  (void)path;
-  return obb3_detail::overlapAvx2(a, b, phi);
-}
-
-bool largestGapOnPath(BatchPath path, const double* a, const double* b, double phi,
-                      obb3_detail::LargestGap& out) {
-#if defined(CARDEMO_BATCH_AVX512)
-  if (path == BatchPath::kAvx512) return obb3_detail::largestGapAvx512(a, b, phi, out);
-#endif
-  (void)path;
-  return obb3_detail::largestGapAvx2(a, b, phi, out);
-}
-#endif
-
 }  // namespace
 
 SatResult3 collideObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
-#if defined(CARDEMO_BATCH_AVX2)
-  if (const BatchPath path = batchPath(); path != BatchPath::kPortable) {
-    obb3_detail::LargestGap largest;
-    if (largestGapOnPath(path, numbersOf(a), numbersOf(b),
-                         std::max(a.frameDefect(), b.frameDefect()), largest)) {
-      SatResult3 r;
-      r.separation = largest.gap;
-      r.axis_index = largest.axis;
-      r.normal = winningNormal(a, b, StoredPose{largest}, largest.axis);
-      r.hit = r.separation <= 0.0;
-      assert(isFinite(r));
-      return r;
-    }
-    // Some edge gap lies within the bound (or the scale is outside the root-free range): the SSE2
-    // path takes the edges one by one.
-  }
-#endif
   return collideSse2(a, b);
 }
 
 bool overlapObb3(const Obb3& a, const Obb3& b) {
   assert(inDomain(a) && inDomain(b));
-#if defined(CARDEMO_BATCH_AVX2)
-  if (const BatchPath path = batchPath(); path != BatchPath::kPortable) {
-    const obb3_detail::Verdict verdict =
-        overlapOnPath(path, numbersOf(a), numbersOf(b), std::max(a.frameDefect(), b.frameDefect()));
-    if (verdict != obb3_detail::Verdict::kUndecided) {
-      return verdict == obb3_detail::Verdict::kOverlapping;
-    }
-    // Some edge gap lies within the bound: the SSE2 path decides it axis by axis.
-  }
-#endif
   return overlapSse2(a, b);
 }
 

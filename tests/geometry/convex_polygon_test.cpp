@@ -10,17 +10,21 @@
 #include <utility>
 #include <vector>
 
-#include "../support/batch_paths.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "geometry/sat_obb2.hpp"
 #include "random_cases2.hpp"
+#include "shape_pairs.hpp"
 
 namespace cardemo {
 namespace {
 
 using testing::ClassStats;
 using testing::Failures;
+using testing::placedNearTouching;
+using testing::quadrilateralPair;
 using testing::Random;
+using testing::randomShape;
+using testing::Shape;
 
 // --- fromPoints -------------------------------------------------------------------------------
 
@@ -111,28 +115,6 @@ TEST(ConvexPolygonFromPoints, CounterClockwiseInputKeepsItsOrder) {
 
 // --- SAT against the exact oracle -------------------------------------------------------------
 
-// One side of a pair: a polygon or a box.
-struct Shape {
-  bool is_box = false;
-  Obb2 box;
-  ConvexPolygon poly;
-
-  [[nodiscard]] ConvexPolygon asPolygon() const {
-    return is_box ? ConvexPolygon::fromObb(box) : poly;
-  }
-  [[nodiscard]] std::vector<Eigen::Vector2d> points() const {
-    return testing::pointsOf(asPolygon());
-  }
-  [[nodiscard]] Eigen::Vector2d anchor() const { return is_box ? box.center : poly.vertex(0); }
-  void translate(const Eigen::Vector2d& t) {
-    if (is_box) {
-      box.center += t;
-    } else {
-      poly = testing::translated(poly, t);
-    }
-  }
-};
-
 SatResult2 fast(const Shape& a, const Shape& b) {
   if (a.is_box && b.is_box) return collideObb2(a.box, b.box);
   if (a.is_box) return collideObbPolygon(a.box, b.poly);
@@ -146,18 +128,6 @@ exact::ExactResult oracle(const Shape& a, const Shape& b) {
   if (a.is_box) return exact::collideObbPolygon(a.box, b.poly);
   if (b.is_box) return exact::collideObbPolygon(b.box, a.poly);
   return exact::collidePolygons(a.poly, b.poly);
-}
-
-Shape randomShape(Random& rng, const Eigen::Vector2d& center, double lo, double hi,
-                  bool allow_box) {
-  Shape s;
-  s.is_box = allow_box && rng.integer(0, 2) == 0;
-  if (s.is_box) {
-    s.box = rng.box(center, lo, hi);
-  } else {
-    s.poly = rng.polygon(center, lo, hi);
-  }
-  return s;
 }
 
 using ShapePairMaker = std::function<std::pair<Shape, Shape>(Random&)>;
@@ -187,54 +157,10 @@ ClassStats runShapeClass(std::uint64_t seed, const ShapePairMaker& make) {
       });
 }
 
-// Vertex of `p` farthest along `d`.
-Eigen::Vector2d supportVertex(const ConvexPolygon& p, const Eigen::Vector2d& d) {
-  int best = 0;
-  for (int i = 1; i < p.count; ++i) {
-    if (p.vertex(i).dot(d) > p.vertex(best).dot(d)) best = i;
-  }
-  return p.vertex(best);
-}
-
-// B against one of A's edges (or A against one of B's) at a chosen signed gap along its normal;
-// the other shape's nearest vertex lands on that edge, so the gap is usually the SAT separation.
-std::pair<Shape, Shape> placedNearTouching(Random& rng, Shape a, Shape b) {
-  const ConvexPolygon pa = a.asPolygon(), pb = b.asPolygon();
-  const bool along_a = rng.integer(0, 1) == 0;
-  const ConvexPolygon& owner = along_a ? pa : pb;
-  const int k = rng.integer(0, owner.count - 1);
-  const Eigen::Vector2d p0 = owner.vertex(k), p1 = owner.vertex((k + 1) % owner.count);
-  const Eigen::Vector2d on_edge = p0 + rng.uniform(0.05, 0.95) * (p1 - p0);
-  const Eigen::Vector2d m = Eigen::Vector2d((p1 - p0).y(), -(p1 - p0).x()).normalized();
-  const Eigen::Vector2d d = along_a ? m : Eigen::Vector2d(-m);  // from A towards B
-  const double gap = rng.signedLogUniform(1e-9, 1.0);
-  const Eigen::Vector2d meet = along_a ? Eigen::Vector2d(on_edge - supportVertex(pb, -d))
-                                       : Eigen::Vector2d(supportVertex(pa, d) - on_edge);
-  b.translate(meet + d * gap);
-  return {a, b};
-}
-
 std::pair<Shape, Shape> nearTouching(Random& rng, const Eigen::Vector2d& base) {
   Shape a = randomShape(rng, base, 0.1, 20.0, true);
   Shape b = randomShape(rng, base, 0.1, 20.0, !a.is_box);
   return placedNearTouching(rng, a, b);
-}
-
-// A quadrilateral, half the time a box's four corners.
-Shape randomQuadrilateral(Random& rng, const Eigen::Vector2d& center) {
-  Shape s;
-  s.poly = rng.integer(0, 1) == 0 ? ConvexPolygon::fromObb(rng.box(center, 0.1, 20.0))
-                                  : rng.quadrilateral(center, 0.1, 20.0);
-  return s;
-}
-
-// Two quadrilaterals (collidePolygons' own fast path) near touching or a few metres apart, up to
-// 1e7 m from the origin.
-std::pair<Shape, Shape> quadrilateralPair(Random& rng) {
-  const Eigen::Vector2d base = rng.farPoint(1e7);
-  Shape a = randomQuadrilateral(rng, base);
-  if (rng.integer(0, 1) == 0) return placedNearTouching(rng, a, randomQuadrilateral(rng, base));
-  return {a, randomQuadrilateral(rng, base + rng.offset(0, 20))};
 }
 
 TEST(ConvexPolygonRandom, GapsOnBothSidesOfTouching) {
@@ -343,65 +269,6 @@ TEST(ConvexPolygonSat, SeparatedTriangles) {
   EXPECT_NEAR(r.separation, std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(r.normal.x(), std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(r.normal.y(), std::sqrt(0.5), 1e-15);
-}
-
-// Two squares of side s on an integer grid, the second offset by (dx, dy) with |dx| = |dy| near s,
-// so that axes of different directions tie for the largest gap and only the rule "the first slot,
-// A's axes before B's" decides the normal. Each square starts at a random corner.
-std::pair<ConvexPolygon, ConvexPolygon> tiedSquares(Random& rng) {
-  const double s = static_cast<double>(rng.integer(1, 3));
-  const double d = s + static_cast<double>(rng.integer(-1, 1));
-  const Eigen::Vector2d origin(static_cast<double>(rng.integer(-5, 5)) * 1e6, 1e7);
-  const Eigen::Vector2d offset(rng.integer(0, 1) == 0 ? d : -d, rng.integer(0, 1) == 0 ? d : -d);
-  const auto square = [&rng, s](const Eigen::Vector2d& corner) {
-    const Eigen::Vector2d ccw[4] = {{0, 0}, {s, 0}, {s, s}, {0, s}};
-    const int first = rng.integer(0, 3);
-    ConvexPolygon p;
-    p.count = 4;
-    for (int k = 0; k < 4; ++k) {
-      p.vertices[static_cast<std::size_t>(k)] = corner + ccw[(first + k) % 4];
-    }
-    return p;
-  };
-  const ConvexPolygon a = square(origin);
-  return {a, square(origin + offset)};
-}
-
-// The quadrilateral fast path has an SSE2 and an AVX2 form: the same bits on every path, also
-// where the fast range ends (huge coordinates, tiny edges) and the general path takes over, and
-// where axes tie for the largest gap.
-TEST(ConvexPolygonSat, QuadrilateralsGiveTheSameBitsOnEveryPath) {
-  testing::BatchPathGuard guard;
-  const std::vector<BatchPath> paths = testing::availableBatchPaths();
-  // With the portable path only there is nothing to compare: say so rather than pass.
-  if (paths.size() < 2) GTEST_SKIP() << "this CPU runs only the portable path";
-  Random rng(2007);
-  for (int i = 0; i < 20000; ++i) {
-    auto [a, b] = quadrilateralPair(rng);
-    if (i % 10 == 1) {  // past kLargestFastCoordinate relative to A's first vertex
-      b.translate(rng.direction() * 0x1p101);
-    } else if (i % 10 == 2) {  // edges below 1e-30 m: squared lengths below kSmallestFastLength2
-      ConvexPolygon tiny = a.poly;
-      for (int k = 0; k < 4; ++k) {
-        tiny.vertices[static_cast<std::size_t>(k)] =
-            a.poly.vertex(0) + (a.poly.vertex(k) - a.poly.vertex(0)) * 1e-32;
-      }
-      a.poly = tiny;
-    } else if (i % 10 == 3) {
-      std::tie(a.poly, b.poly) = tiedSquares(rng);
-    }
-    setBatchPath(paths.front());
-    const SatResult2 want = collidePolygons(a.poly, b.poly);
-    for (const BatchPath path : paths) {
-      setBatchPath(path);
-      const SatResult2 got = collidePolygons(a.poly, b.poly);
-      ASSERT_TRUE(got.hit == want.hit && testing::sameBits(got.separation, want.separation) &&
-                  testing::sameBits(got.normal.x(), want.normal.x()) &&
-                  testing::sameBits(got.normal.y(), want.normal.y()))
-          << "pair " << i << " on " << batchPathName(path) << ": " << got.separation << " against "
-          << want.separation;
-    }
-  }
 }
 
 TEST(ConvexPolygonSat, BoxPolygonMatchesBoxBox) {

@@ -13,7 +13,6 @@
 #include <sstream>
 #include <string>
 
-#include "../support/batch_paths.hpp"
 #include "../support/random_class.hpp"
 #include "compare/exact/exact_sat.hpp"
 #include "random_cases3.hpp"
@@ -21,22 +20,13 @@
 namespace cardemo {
 namespace {
 
+using test3::describe;
 using test3::Pair3;
 using testing::ClassStats;
 using testing::Failures;
 using testing::kCasesPerClass;
 using testing::kHitTolerance;
 using testing::kSepTolerance;
-
-std::string describe(const Obb3& a, const Obb3& b) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "A c=" << a.center.transpose() << " h=" << a.half.transpose() << " R=["
-    << a.rotation().row(0) << "; " << a.rotation().row(1) << "; " << a.rotation().row(2) << "]\n"
-    << "B c=" << b.center.transpose() << " h=" << b.half.transpose() << " R=["
-    << b.rotation().row(0) << "; " << b.rotation().row(1) << "; " << b.rotation().row(2) << "]";
-  return s.str();
-}
 
 // Checks one pair in both orders against the oracle (computed once: the oracle is symmetric, which
 // exact_sat3_test checks). `strictHit`: the oracle's hit must be matched even inside 1e-6 m.
@@ -343,48 +333,6 @@ TEST(Obb3FastPath, PerturbedFramesMatchTheOracle) {
     }
     EXPECT_EQ(f.count(), 0) << eps << "\n" << f.report();
     EXPECT_EQ(t.cases, n);
-  }
-}
-
-// overlapObb3 and collideObb3 run their common case with AVX2 where the CPU has it: the same bits
-// on every path, over every kind of pair the random classes draw and frames off a rotation.
-TEST(Obb3FastPath, EveryPathGivesTheSameBits) {
-  testing::BatchPathGuard guard;
-  const std::vector<BatchPath> paths = testing::availableBatchPaths();
-  // With the portable path only there is nothing to compare: say so rather than pass.
-  if (paths.size() < 2) GTEST_SKIP() << "this CPU runs only the portable path";
-  const std::function<Pair3(std::mt19937_64&)> kinds[] = {
-      test3::gapPair,      test3::farPair,
-      test3::sizePair,     [](std::mt19937_64& rng) { return test3::nearParallelPair(rng); },
-      test3::parallelPair, test3::containmentPair,
-      test3::touchingPair, test3::coincidentPair};
-  std::mt19937_64 rng(0x0b3a0300);
-  for (int k = 0; k < 40000; ++k) {
-    Pair3 p = kinds[k % 8](rng);
-    if (k % 5 == 0) {  // off a rotation: 1e-12 (a wider bound) or 1e-9 (no filter)
-      const double eps = k % 10 == 0 ? 1e-12 : 1e-9;
-      Eigen::Matrix3d m = p.b.rotation();
-      for (int e = 0; e < 9; ++e) m(e / 3, e % 3) += eps * test3::uniform(rng, -1, 1);
-      p.b.setRotation(m);
-    }
-    setBatchPath(paths.front());
-    const SatResult3 want = collideObb3(p.a, p.b);
-    const bool want_overlap = overlapObb3(p.a, p.b);
-    for (const BatchPath path : paths) {
-      setBatchPath(path);
-      const SatResult3 got = collideObb3(p.a, p.b);
-      ASSERT_EQ(overlapObb3(p.a, p.b), want_overlap)
-          << "pair " << k << " on " << batchPathName(path);
-      ASSERT_TRUE(got.hit == want.hit && got.axis_index == want.axis_index &&
-                  testing::sameBits(got.separation, want.separation) &&
-                  testing::sameBits(got.normal.x(), want.normal.x()) &&
-                  testing::sameBits(got.normal.y(), want.normal.y()) &&
-                  testing::sameBits(got.normal.z(), want.normal.z()))
-          << "pair " << k << " on " << batchPathName(path) << ": axis " << got.axis_index << " sep "
-          << got.separation << " against axis " << want.axis_index << " sep " << want.separation
-          << "\n"
-          << describe(p.a, p.b);
-    }
   }
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <sstream>
+#include <string>
 
 #include "../support/random_draws.hpp"
 #include "../support/test_scale.hpp"
@@ -298,6 +300,17 @@ inline Pair3 touchingPair(std::mt19937_64& rng) {
   }
   p.b.center = p.a.center + d;
   return p;
+}
+
+// Both boxes, every digit, for a failure message.
+inline std::string describe(const Obb3& a, const Obb3& b) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "A c=" << a.center.transpose() << " h=" << a.half.transpose() << " R=["
+    << a.rotation().row(0) << "; " << a.rotation().row(1) << "; " << a.rotation().row(2) << "]\n"
+    << "B c=" << b.center.transpose() << " h=" << b.half.transpose() << " R=["
+    << b.rotation().row(0) << "; " << b.rotation().row(1) << "; " << b.rotation().row(2) << "]";
+  return s.str();
 }
 
 }  // namespace cardemo::test3

@@ -1,4 +1,4 @@
-#include "geometry/polygon_store.hpp"
+#include "lab/geometry/polygon_store.hpp"
 
 #include <limits>
 #include <stdexcept>

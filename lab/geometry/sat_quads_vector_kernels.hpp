@@ -14,7 +14,7 @@
 
 #include <immintrin.h>
 
-#include "geometry/sat_quads.hpp"
+#include "lab/geometry/sat_quads.hpp"
 
 namespace cardemo::sat_detail {
 namespace {

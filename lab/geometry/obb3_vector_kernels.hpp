@@ -14,7 +14,7 @@
 
 #include <immintrin.h>
 
-#include "geometry/obb3_lanes.hpp"
+#include "lab/geometry/obb3_lanes.hpp"
 
 namespace cardemo::obb3_detail {
 namespace {

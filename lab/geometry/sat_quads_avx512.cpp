@@ -1,13 +1,13 @@
 // The quadrilateral SAT's vector kernel (sat_quads_vector_kernels.hpp) built with
-// -mavx2 -mfma -mavx512f -mavx512vl (CMakeLists.txt): the same operations as the AVX2 build, with
-// thirty-two vector registers. Called only on geometry/batch_path's kAvx512 path.
+// -mavx2 -mfma -mavx512f -mavx512vl (lab/CMakeLists.txt): the same operations as the AVX2 build,
+// with thirty-two vector registers. Called only on geometry/batch_path's kAvx512 path.
 
 #if defined(CARDEMO_BATCH_AVX512)
 #if !defined(__AVX512VL__)
-#error "sat_quads_avx512.cpp needs -mavx2 -mfma -mavx512f -mavx512vl (set in CMakeLists.txt)"
+#error "sat_quads_avx512.cpp needs -mavx2 -mfma -mavx512f -mavx512vl (set in lab/CMakeLists.txt)"
 #endif
 
-#include "geometry/sat_quads_vector_kernels.hpp"
+#include "lab/geometry/sat_quads_vector_kernels.hpp"
 
 namespace cardemo::sat_detail {
 

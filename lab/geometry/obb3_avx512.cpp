@@ -1,13 +1,13 @@
 // overlapObb3's and collideObb3's vector kernels (obb3_vector_kernels.hpp) built with
-// -mavx2 -mfma -mavx512f -mavx512vl (CMakeLists.txt): the same operations as the AVX2 build, with
-// thirty-two vector registers. Called only on geometry/batch_path's kAvx512 path.
+// -mavx2 -mfma -mavx512f -mavx512vl (lab/CMakeLists.txt): the same operations as the AVX2 build,
+// with thirty-two vector registers. Called only on geometry/batch_path's kAvx512 path.
 
 #if defined(CARDEMO_BATCH_AVX512)
 #if !defined(__AVX512VL__)
-#error "obb3_avx512.cpp needs -mavx2 -mfma -mavx512f -mavx512vl (set in CMakeLists.txt)"
+#error "obb3_avx512.cpp needs -mavx2 -mfma -mavx512f -mavx512vl (set in lab/CMakeLists.txt)"
 #endif
 
-#include "geometry/obb3_vector_kernels.hpp"
+#include "lab/geometry/obb3_vector_kernels.hpp"
 
 namespace cardemo::obb3_detail {
 

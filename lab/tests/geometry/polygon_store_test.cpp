@@ -1,4 +1,4 @@
-#include "geometry/polygon_store.hpp"
+#include "lab/geometry/polygon_store.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
-#include "random_cases2.hpp"
+#include "tests/geometry/random_cases2.hpp"
 
 namespace cardemo {
 namespace {
