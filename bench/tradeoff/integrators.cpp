@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "car_reference_runs.hpp"
+#include "lab/sim/car_integrators.hpp"
 #include "sim/world.hpp"
 #include "tradeoff_harness.hpp"
 
@@ -24,15 +25,15 @@ constexpr const char* kUsage =
     "--quick: one second of simulated time and a few timing rounds (a smoke test, not for plots)\n";
 
 struct Scheme {
-  CarIntegrator integrator;
+  CarStepScheme integrator;  // null: the game's exact-arc RK4
   const char* name;
 };
 
 constexpr Scheme kSchemes[] = {
-    {CarIntegrator::kSemiImplicitEuler, "semi_implicit_euler"},
-    {CarIntegrator::kExplicitEuler, "explicit_euler"},
-    {CarIntegrator::kRk4, "rk4"},
-    {CarIntegrator::kArcRk4, "arc_rk4"},
+    {stepSemiImplicitEuler, "semi_implicit_euler"},
+    {stepExplicitEuler, "explicit_euler"},
+    {stepRk4, "rk4"},
+    {nullptr, "arc_rk4"},
 };
 constexpr int kRates[] = {30, 60, 120, 240, 480};
 
@@ -51,7 +52,7 @@ struct Config {
 void measureError(Config& c) {
   CarState s = c.run->start;
   for (long n = 1; n <= c.steps; ++n) {
-    s = integrateCar(s, c.run->input, c.params, 1.0 / c.hz);
+    s = integrateCar(s, c.run->input, c.params, 1.0 / c.hz, c.scheme.integrator);
     const double err = (s.position - c.run->exact(static_cast<double>(n) / c.hz).position).norm();
     c.max_error = std::max(c.max_error, err);
     c.final_error = err;
@@ -64,7 +65,8 @@ double timeSample(const Config& c, long reps) {
   const double begin = threadCpuNs();
   for (long r = 0; r < reps; ++r) {
     CarState s = c.run->start;
-    for (long n = 0; n < c.steps; ++n) s = integrateCar(s, c.run->input, c.params, dt);
+    for (long n = 0; n < c.steps; ++n)
+      s = integrateCar(s, c.run->input, c.params, dt, c.scheme.integrator);
     benchmark::DoNotOptimize(s);
   }
   return (threadCpuNs() - begin) / static_cast<double>(reps * c.steps);
@@ -79,7 +81,7 @@ int run(int argc, char** argv) {
   const int rounds = options.quick ? 2 : 9;
 
   const std::vector<ReferenceRun> runs = referenceRuns();
-  const CarIntegrator default_scheme = CarParams{}.integrator;
+  const CarStepScheme default_scheme = SimulationSchemes{}.car_step;
   const double default_hz = WorldSettings{}.hz;
   std::vector<Config> configs;
   for (const ReferenceRun& r : runs) {
@@ -90,7 +92,6 @@ int run(int argc, char** argv) {
         c.scheme = scheme;
         c.hz = hz;
         c.params = r.params;
-        c.params.integrator = scheme.integrator;
         c.steps = std::lround(seconds * hz);
         measureError(c);
         configs.push_back(c);

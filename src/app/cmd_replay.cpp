@@ -3,7 +3,6 @@
 
 #include <cstdio>
 #include <functional>
-#include <map>
 #include <string>
 
 #include "app/commands.hpp"
@@ -23,7 +22,6 @@ struct ReplayOptions {
   std::string json_path;
   std::string trace_path;
   bool print_expect = false;
-  SimulationSchemes schemes;
 };
 
 constexpr std::size_t kMaxHitsShown = 12;
@@ -100,9 +98,7 @@ int runReplayCommand(const ReplayOptions& options) {
     std::fprintf(stderr, "%s\n", scene.error().toString().c_str());
     return 2;
   }
-  WorldSettings settings = settingsForReplay(replay.value());
-  settings.schemes = options.schemes;
-  World world(std::move(scene).value(), settings);
+  World world(std::move(scene).value(), settingsForReplay(replay.value()));
 
   std::unique_ptr<AtomicStream> trace;
   if (!options.trace_path.empty()) {
@@ -171,21 +167,6 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
                   "Scene file; overrides the replay's `scene` line");
   sub->add_option("--json", options->json_path, "Write the summary JSON to FILE (- for stdout)");
   sub->add_option("--trace", options->trace_path, "Write a CSV with one row per frame to FILE");
-  const std::map<std::string, BroadPhaseBox> boxes{
-      {"tight", BroadPhaseBox::kTight}, {"rotation-proof", BroadPhaseBox::kRotationProof}};
-  sub->add_option("--broadphase-box", options->schemes.broad_phase_box,
-                  "Player box for broad-phase queries: tight (default) or rotation-proof (the seed "
-                  "demo's box around the circumscribed circle), to compare their candidate counts")
-      ->transform(CLI::CheckedTransformer(boxes, CLI::ignore_case));
-  const std::map<std::string, CollisionDetection> modes{
-      {"continuous", CollisionDetection::kContinuous},
-      {"substepped", CollisionDetection::kSubstepped},
-      {"discrete", CollisionDetection::kDiscrete}};
-  sub->add_option("--collision", options->schemes.collision,
-                  "Fast-motion collision detection: continuous (default: swept to the time of "
-                  "impact), substepped (sub-poses half the car's width apart) or discrete (one "
-                  "test per step; fast cars tunnel)")
-      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
   sub->add_flag("--print-expect", options->print_expect,
                 "Print expectation lines that describe this run (to paste into the replay)");
   sub->callback([options, &exit_code] { exit_code = runReplayCommand(*options); });

@@ -23,11 +23,4 @@ Aabb2 Obb2::aabb() const {
   return {center - r, center + r};
 }
 
-Aabb2 Obb2::rotationProofAabb() const {
-  // hypot, not norm(): squaring a half extent beyond 1e154 would overflow.
-  const double radius = std::hypot(half.x(), half.y());
-  const Eigen::Vector2d r{radius, radius};
-  return {center - r, center + r};
-}
-
 }  // namespace cardemo

@@ -24,8 +24,6 @@ struct Obb2 {
   [[nodiscard]] std::array<Eigen::Vector2d, 4> corners() const;
   /// Tight axis-aligned bounds.
   [[nodiscard]] Aabb2 aabb() const;
-  /// Rotation-proof bounds: the square around the circumscribed circle (the seed demo's box).
-  [[nodiscard]] Aabb2 rotationProofAabb() const;
 };
 
 }  // namespace cardemo

@@ -70,7 +70,7 @@ void drawCounters(Canvas& canvas, const World& world, const OverlayPalette& pale
 
 Aabb2 broadPhaseBox(const World& world) {
   const Obb2 box = world.carBox();
-  return queryBox(box, box.aabb(), world.settings().schemes.broad_phase_box);
+  return queryBox(box, box.aabb(), world.settings().schemes);
 }
 
 void drawDebugOverlay(Canvas& canvas, const World& world, const Camera& camera,

@@ -90,32 +90,20 @@ double steerTarget(const CarParams& params, double speed, const InputFrame& inpu
 }
 
 CarState integrateCar(const CarState& state, const InputFrame& input, const CarParams& params,
-                      double dt) {
-  return integrateCarToward(state, input, params, dt, steerTarget(params, state.speed, input));
+                      double dt, CarStepScheme car_step) {
+  return integrateCarToward(state, input, params, dt, steerTarget(params, state.speed, input),
+                            car_step);
 }
 
 CarState integrateCarToward(const CarState& state, const InputFrame& input, const CarParams& params,
-                            double dt, double steer_target) {
+                            double dt, double steer_target, CarStepScheme car_step) {
   CarState steered = state;
   steered.steer = approach(state.steer, steer_target, params.steer_rate * dt);
   steered.speed = settledAtLimit(state.speed, input, params);
 
   const SpeedLaw law = speedLawFor(steered.speed, input, params);
-  CarState next;
-  switch (params.integrator) {
-    case CarIntegrator::kArcRk4:  // the game's
-      next = stepArcRk4(steered, law, params, dt);
-      break;
-    case CarIntegrator::kRk4:
-      next = stepRk4(steered, law, params, dt);
-      break;
-    case CarIntegrator::kExplicitEuler:
-      next = stepExplicitEuler(steered, law, params, dt);
-      break;
-    case CarIntegrator::kSemiImplicitEuler:
-      next = stepSemiImplicitEuler(steered, law, params, dt);
-      break;
-  }
+  const CarState next = car_step == nullptr ? stepArcRk4(steered, law, params, dt)
+                                            : car_step(steered, law, params, dt);
   // Lie splitting (Hairer, Lubich and Wanner, "Geometric Numerical Integration", 2nd ed., sec.
   // II.5): the longitudinal schemes above keep their closed forms; the slip is one shared step.
   if (next.slip == 0.0 && !input.handbrake) return next;

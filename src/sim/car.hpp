@@ -36,8 +36,6 @@ struct CarParams {
                                                                ///< this forward speed, m/s.
   double contact_friction = 0.3;  ///< Coulomb coefficient of car against walls and colliders: the
                                   ///< tangential speed change is at most this times the normal one.
-  CarIntegrator integrator =
-      CarIntegrator::kArcRk4;  ///< Scheme of integrateCar (docs/performance.md).
 };
 
 /// Kinematic state of the player's car.
@@ -73,12 +71,14 @@ struct CarState {
 /// Advances the car by one fixed step `dt` (seconds) under `input`: the steering angle moves first
 /// (rate limited, towards effectiveLock) and is then held over the step; throttle/brake/reverse,
 /// engine braking, handbrake, drag and rolling resistance drive the speed, the bicycle model the
-/// heading, and the position moves along the heading, integrated by `params.integrator`. No scheme
-/// lets resistance or braking reverse the car within a step, and none lets the engine pass
-/// `max_speed` or the reverse command pass `max_reverse_speed`. Then one split step shared by every
-/// scheme (slideCar) handles the lateral slip.
+/// heading, and the position moves along the heading, integrated by `car_step` (null: the game's
+/// exact-arc RK4; lab/sim supplies the others). No scheme lets resistance or braking reverse the
+/// car within a step, and none lets the engine pass `max_speed` or the reverse command pass
+/// `max_reverse_speed`. Then one split step shared by every scheme (slideCar) handles the lateral
+/// slip.
 [[nodiscard]] CarState integrateCar(const CarState& state, const InputFrame& input,
-                                    const CarParams& params, double dt);
+                                    const CarParams& params, double dt,
+                                    CarStepScheme car_step = nullptr);
 
 /// The wheel angle `input` steers towards at `speed`: +-effectiveLock, or 0 when not steering.
 [[nodiscard]] double steerTarget(const CarParams& params, double speed, const InputFrame& input);
@@ -86,7 +86,8 @@ struct CarState {
 /// integrateCar with the steering target given: `steer_target` must be steerTarget(params,
 /// state.speed, input), computed once by a caller that needs the lock too.
 [[nodiscard]] CarState integrateCarToward(const CarState& state, const InputFrame& input,
-                                          const CarParams& params, double dt, double steer_target);
+                                          const CarParams& params, double dt, double steer_target,
+                                          CarStepScheme car_step = nullptr);
 
 /// The lateral split step after the integrator (`steered` is the state before it): under the
 /// handbrake the body turns by the integrator's yaw while the velocity keeps its direction (the

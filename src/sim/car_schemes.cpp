@@ -8,37 +8,20 @@
 #include "geometry/trig.hpp"
 
 namespace cardemo {
-namespace {
-
-// Bicycle-model curvature of the path, 1/m: yaw rate = v tan(delta) / L (Rajamani, "Vehicle
-// Dynamics and Control", 2nd ed., sec. 2.2), so heading changes by tan(delta) / L per metre.
 double curvatureOf(const CarState& s, const CarParams& p) {
+  // Yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2), so
+  // the heading changes by tan(delta) / L per metre.
   return trig::tan(s.steer) / p.wheelbase;
 }
 
-// The heading's unit vector; the stored one when the angle has not moved, so that an exact
-// axis-aligned direction from unitFromDegrees survives straight driving.
 Eigen::Vector2d directionAt(const CarState& start, double heading) {
   return heading == start.heading ? start.direction : unitFromRadians(heading);
 }
 
-// Wraps the new heading and recomputes the direction only when the angle changed.
 void setHeading(CarState& next, const CarState& start, double unwrapped) {
   next.heading = unwrapped == start.heading ? start.heading : wrapRadians(unwrapped);
   next.direction = directionAt(start, next.heading);
 }
-
-// Speed after drag (a = -drag v |v|) and rolling resistance; resistance stops the car, it never
-// reverses it.
-double resistedSpeed(double v, const CarParams& p, double dt) {
-  if (v == 0.0) return v;
-  const double magnitude = std::abs(v);
-  const double loss = (p.drag * magnitude * magnitude + p.rolling_resistance) * dt;
-  if (loss >= magnitude) return 0.0;
-  return v > 0.0 ? v - loss : v + loss;
-}
-
-}  // namespace
 
 SpeedLaw speedLawFor(double speed, const InputFrame& input, const CarParams& params) {
   SpeedLaw law;
@@ -89,86 +72,6 @@ double settledAtLimit(double speed, const InputFrame& input, const CarParams& pa
   const double limit = input.up ? params.max_speed : -params.max_reverse_speed;
   if (!std::isfinite(limit) || (input.up ? speed < 0.0 : speed > 0.0)) return speed;
   return std::abs(speed - limit) <= kRounding * std::abs(limit) ? limit : speed;
-}
-
-double SpeedLaw::commandedSpeed(double v, double dt) const {
-  if (capped) {
-    const double pushed = v + command * dt;
-    return travel > 0.0 ? std::min(pushed, cap) : std::max(pushed, cap);
-  }
-  // Braking, engine braking or the handbrake: toward zero, landing on it exactly.
-  const double max_delta = std::abs(command) * dt;
-  if (v < 0.0) return std::min(v + max_delta, 0.0);
-  if (v > 0.0) return std::max(v - max_delta, 0.0);
-  return v;
-}
-
-CarState stepSemiImplicitEuler(const CarState& steered, const SpeedLaw& law,
-                               const CarParams& params, double dt) {
-  // The product's original update, kept bit for bit: command, then resistance (operator
-  // splitting), then the new speed drives this step's rotation and translation.
-  CarState next = steered;
-  next.speed = resistedSpeed(law.commandedSpeed(steered.speed, dt), params, dt);
-
-  // Kinematic bicycle model, reference point moving along the heading (no slip):
-  // yaw rate = v tan(delta) / L (Rajamani, "Vehicle Dynamics and Control", 2nd ed., sec. 2.2).
-  const double yaw_rate = next.speed * trig::tan(next.steer) / params.wheelbase;
-  next.heading = wrapRadians(steered.heading + yaw_rate * dt);
-  // Recomputed from the angle only when it changed: an exact axis-aligned start direction from
-  // unitFromDegrees survives straight driving, and the direction can never drift off unit length.
-  if (next.heading != steered.heading) next.direction = unitFromRadians(next.heading);
-
-  const double distance = next.speed * dt;
-  next.position.x() = steered.position.x() + next.direction.x() * distance;
-  next.position.y() = steered.position.y() + next.direction.y() * distance;
-  return next;
-}
-
-CarState stepExplicitEuler(const CarState& steered, const SpeedLaw& law, const CarParams& params,
-                           double dt) {
-  CarState next = steered;
-  const double v = steered.speed;
-  next.speed = law.endSpeed(v + law.rate(v) * dt);
-  setHeading(next, steered, steered.heading + v * curvatureOf(steered, params) * dt);
-  const double distance = v * dt;
-  next.position.x() = steered.position.x() + steered.direction.x() * distance;
-  next.position.y() = steered.position.y() + steered.direction.y() * distance;
-  return next;
-}
-
-CarState stepRk4(const CarState& steered, const SpeedLaw& law, const CarParams& params, double dt) {
-  // Classical RK4 (Hairer, Norsett and Wanner, "Solving Ordinary Differential Equations I",
-  // sec. II.1, table 1.2) on x' = v cos(h), y' = v sin(h), h' = v k, v' = law.rate(v). Stage speeds
-  // are kept along the travel so that a stage never drives the car backwards through a stop.
-  const double k = curvatureOf(steered, params);
-  const double h0 = steered.heading, v1 = steered.speed;
-  const Eigen::Vector2d d1 = steered.direction;
-  const double a1 = law.rate(v1);
-
-  const double v2 = law.alongTravel(v1 + 0.5 * dt * a1);
-  const double h2 = h0 + 0.5 * dt * (v1 * k);
-  const Eigen::Vector2d d2 = directionAt(steered, h2);
-  const double a2 = law.rate(v2);
-
-  const double v3 = law.alongTravel(v1 + 0.5 * dt * a2);
-  const double h3 = h0 + 0.5 * dt * (v2 * k);
-  const Eigen::Vector2d d3 = directionAt(steered, h3);
-  const double a3 = law.rate(v3);
-
-  const double v4 = law.alongTravel(v1 + dt * a3);
-  const double h4 = h0 + dt * (v3 * k);
-  const Eigen::Vector2d d4 = directionAt(steered, h4);
-  const double a4 = law.rate(v4);
-
-  const double w = dt / 6.0;
-  CarState next = steered;
-  next.speed = law.endSpeed(v1 + w * (a1 + 2.0 * a2 + 2.0 * a3 + a4));
-  setHeading(next, steered, h0 + w * ((v1 + 2.0 * v2 + 2.0 * v3 + v4) * k));
-  next.position.x() = steered.position.x() +
-                      w * (v1 * d1.x() + 2.0 * v2 * d2.x() + 2.0 * v3 * d3.x() + v4 * d4.x());
-  next.position.y() = steered.position.y() +
-                      w * (v1 * d1.y() + 2.0 * v2 * d2.y() + 2.0 * v3 * d3.y() + v4 * d4.y());
-  return next;
 }
 
 CarState stepArcRk4(const CarState& steered, const SpeedLaw& law, const CarParams& params,

@@ -1,8 +1,9 @@
 #pragma once
-/// The car's integrators: the speed law of one step (the driver's mode, chosen once) and the
-/// semi-implicit Euler, explicit Euler, RK4 and exact-arc updates built on it (integrateCar picks
-/// one).
+/// The car's integrator: the speed law of one step (the driver's mode, chosen once) and the
+/// exact-arc update built on it, the game's (lab/sim/car_integrators builds the alternatives that
+/// studies compare on the same law).
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 
@@ -54,9 +55,6 @@ struct SpeedLaw {
     if (!capped) return along;
     return travel > 0.0 ? std::min(along, cap) : std::max(along, cap);
   }
-  /// The command alone as one explicit step from `v` over `dt` (semi-implicit Euler's first
-  /// half): clamped at `cap` when capped, else toward zero, stopping exactly on it.
-  [[nodiscard]] double commandedSpeed(double v, double dt) const;
 };
 
 /// The speed law of one step from the speed at its start (m/s) and the keys held.
@@ -66,19 +64,16 @@ struct SpeedLaw {
 /// throttle or reverse key drives towards (max_speed, -max_reverse_speed) taken as that limit.
 [[nodiscard]] double settledAtLimit(double speed, const InputFrame& input, const CarParams& params);
 
-/// Semi-implicit Euler (the product's original update, kept bit for bit): the command, then drag
-/// and rolling resistance, give the new speed, which then drives the heading and the position.
-[[nodiscard]] CarState stepSemiImplicitEuler(const CarState& steered, const SpeedLaw& law,
-                                             const CarParams& params, double dt);
+/// Bicycle-model curvature of the path at `state`'s steering angle, 1/m: tan(steer) / wheelbase.
+[[nodiscard]] double curvatureOf(const CarState& state, const CarParams& params);
 
-/// Explicit Euler: heading, position and speed all advance with the derivatives at the start of
-/// the step. `steered` is the state at the start with the step's steering angle already set.
-[[nodiscard]] CarState stepExplicitEuler(const CarState& steered, const SpeedLaw& law,
-                                         const CarParams& params, double dt);
+/// The unit vector of `heading` (radians); `start`'s stored direction when the angle has not moved,
+/// so that an exact axis-aligned direction from unitFromDegrees survives straight driving.
+[[nodiscard]] Eigen::Vector2d directionAt(const CarState& start, double heading);
 
-/// Classical fourth-order Runge-Kutta over (x, y, heading, speed) with the steering held.
-[[nodiscard]] CarState stepRk4(const CarState& steered, const SpeedLaw& law,
-                               const CarParams& params, double dt);
+/// Sets `next`'s heading to `unwrapped` wrapped, and its direction, recomputed only when the angle
+/// changed from `start`'s.
+void setHeading(CarState& next, const CarState& start, double unwrapped);
 
 /// Speed and distance travelled by RK4 over (distance, speed); the position then follows the exact
 /// circular arc of the step's constant curvature tan(steer) / wheelbase over that distance.

@@ -1,37 +1,36 @@
 #pragma once
-/// The numerical schemes a study can swap in: one small policy, defaults are the game's.
+/// The one policy through which studies swap in other schemes than the game's (lab/sim supplies
+/// them): a hook left null is the game's own scheme, at the cost of one well-predicted branch.
 
+#include "geometry/aabb.hpp"
 #include "geometry/obb2.hpp"
 
 namespace cardemo {
 
-/// How integrateCar advances the car's ODE over one step (inputs held within the step).
-/// docs/performance.md ("Run time against error") measures each against closed forms.
-enum class CarIntegrator {
-  kSemiImplicitEuler,  ///< Speed first, then heading and position from the new values (order 1).
-  kExplicitEuler,      ///< Heading, position and speed all from the start of the step (order 1).
-  kRk4,                ///< Classical Runge-Kutta over (x, y, heading, speed) (order 4).
-  kArcRk4,  ///< Speed and distance by RK4; the step follows the exact arc of its constant
-            ///< curvature.
-};
+struct CarParams;
+struct CarState;
+struct SpeedLaw;
+class StepMotion;
 
-/// How the player's motion within a step is checked against the static colliders.
-enum class CollisionDetection {
-  kDiscrete,    ///< One test at the end pose of each step: fast motion can pass through things.
-  kSubstepped,  ///< Sub-poses at most half the car's smaller extent apart.
-  kContinuous,  ///< Swept SAT to the first time of impact when the step moves fast (default).
-};
+/// Advances the car over one step of `dt` seconds from `steered` (the start state with the step's
+/// steering angle set) under the speed law `law`, in place of the game's exact-arc RK4
+/// (stepArcRk4).
+using CarStepScheme = CarState (*)(const CarState& steered, const SpeedLaw& law,
+                                   const CarParams& params, double dt);
 
-/// Which box of the player feeds the broad phase.
-enum class BroadPhaseBox {
-  kTight,          ///< Tight AABB of the current OBB (default).
-  kRotationProof,  ///< The seed demo's box around the circumscribed circle.
-};
+/// Moves the player from `start` to `next` within a step through `motion`, testing for contact on
+/// the way, in place of the game's continuous scheme (StepMotion::continuous). Returns the
+/// fraction of the step at which contact was found (1: at the end pose, or none).
+using MotionScheme = double (*)(StepMotion& motion, const CarState& start, const CarState& next);
 
-/// The alternatives studies compare (docs/performance.md); the game runs the defaults.
+/// The broad-phase query box of the player's box, in place of its tight bounds.
+using QueryBoxScheme = Aabb2 (*)(const Obb2& box);
+
+/// The alternatives studies compare (docs/performance.md); all null, the game's.
 struct SimulationSchemes {
-  CollisionDetection collision = CollisionDetection::kContinuous;  ///< Fast-motion scheme.
-  BroadPhaseBox broad_phase_box = BroadPhaseBox::kTight;           ///< Player box for queries.
+  CarStepScheme car_step = nullptr;    ///< The car's integrator; null: exact-arc RK4.
+  MotionScheme motion = nullptr;       ///< Fast-motion collision scheme; null: continuous.
+  QueryBoxScheme query_box = nullptr;  ///< Player box for broad-phase queries; null: tight AABB.
   /// After a push-out (a pure translation), skip the narrow test of a candidate whose separation
   /// before the push exceeds the distance pushed plus a rounding margin: it stays separated, so
   /// the contacts are the same with or without (false runs every test: the twin tests compare).
@@ -39,8 +38,9 @@ struct SimulationSchemes {
 };
 
 /// The broad-phase query box of the player's box `box`, whose tight bounds are `tight`.
-[[nodiscard]] inline Aabb2 queryBox(const Obb2& box, const Aabb2& tight, BroadPhaseBox kind) {
-  return kind == BroadPhaseBox::kTight ? tight : box.rotationProofAabb();
+[[nodiscard]] inline Aabb2 queryBox(const Obb2& box, const Aabb2& tight,
+                                    const SimulationSchemes& schemes) {
+  return schemes.query_box == nullptr ? tight : schemes.query_box(box);
 }
 
 }  // namespace cardemo

@@ -15,8 +15,6 @@
 namespace cardemo {
 namespace {
 
-// Marks "no contact within the step" for a swept time (valid times are in [0, 1]).
-constexpr double kNoContact = 2.0;
 // Damage points (speed x damage_per_mps) this close above an integer still round down to it.
 constexpr double kDamageRounding = 1e-9;
 // How far (metres) a grid query reaches past the query box on each side, so that the next steps'
@@ -177,7 +175,7 @@ void World::detect() {
     return;
   }
   const Aabb2 bounds = box.aabb();
-  gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
+  gatherCandidates(queryBox(box, bounds, settings_.schemes));
   narrowPhase(box, bounds);
 }
 
@@ -194,7 +192,7 @@ void World::detectAfterPush(double pushed) {
   pushed_ids_.swap(candidates_);
   pushed_gaps_.swap(candidate_gaps_);
   const Aabb2 bounds = box.aabb();
-  gatherCandidates(queryBox(box, bounds, settings_.schemes.broad_phase_box));
+  gatherCandidates(queryBox(box, bounds, settings_.schemes));
   narrowPhaseAfterPush(box, bounds, pushed + verdictMargin(box.center, verdict_scale_));
 }
 
@@ -360,53 +358,18 @@ void World::mergeDetected() {
   }
 }
 
-void World::moveWithSubsteps(const CarState& start, const CarState& next) {
-  const double dt = 1.0 / settings_.hz;
-  const double limit = half_min_extent_;
-  const double motion = std::sqrt(next.speed * next.speed + next.slip * next.slip) * dt;
-  std::int64_t n = 1;
-  // Continuous safety: no sub-step moves the car by more than half its smaller extent, so it
-  // cannot pass through anything (the 2^20 cap only guards against absurd inputs).
-  if (motion > limit) n = static_cast<std::int64_t>(std::min(std::ceil(motion / limit), 1048576.0));
-  const double dh = wrapRadians(next.heading - start.heading);
-  for (std::int64_t i = 1; i <= n; ++i) {
-    if (i == n) {
-      car_ = next;
-    } else {
-      const double f = static_cast<double>(i) / static_cast<double>(n);
-      car_ = next;
-      car_.position.x() = start.position.x() + (next.position.x() - start.position.x()) * f;
-      car_.position.y() = start.position.y() + (next.position.y() - start.position.y()) * f;
-      if (dh != 0.0) {
-        car_.heading = wrapRadians(start.heading + dh * f);
-        car_.direction = unitFromRadians(car_.heading);
-      } else {
-        car_.heading = start.heading;
-        car_.direction = start.direction;
-      }
-    }
-    detect();
-    if (!detected_.empty()) {
-      stats_.substeps += i - 1;
-      contact_fraction_ = static_cast<double>(i) / static_cast<double>(n);
-      return;
-    }
-  }
-  stats_.substeps += n - 1;
-}
-
-double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
-                                  const Eigen::Vector2d& displacement) {
+std::optional<World::SweptContact> World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
+                                                              const Eigen::Vector2d& displacement) {
   // One query with the box swept over the whole motion (start merged with end: a translating box
   // stays inside the hull of its two ends).
-  const BroadPhaseBox kind = settings_.schemes.broad_phase_box;
-  gatherCandidates(queryBox(box, box.aabb(), kind).merged(queryBox(end_box, end_box.aabb(), kind)));
+  const SimulationSchemes& schemes = settings_.schemes;
+  gatherCandidates(
+      queryBox(box, box.aabb(), schemes).merged(queryBox(end_box, end_box.aabb(), schemes)));
   have_detected_ = false;
 
   const double limit = half_min_extent_;
   const double length = std::sqrt(displacement.squaredNorm());
-  double first = kNoContact;
-  first_toi_ = kNoContact;
+  std::optional<SweptContact> first;
   for (const std::uint32_t id : candidates_) {
     ++stats_.sweeps;
     const SweepResult2 r =
@@ -414,6 +377,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
     if (!r.hit) continue;
     const double closing = r.normal.x() * displacement.x() + r.normal.y() * displacement.y();
     double t = 0.0;
+    double toi = 0.0;
     if (r.toi > 0.0) {
       // Stop just past the first touch, leaving the resting penetration that the response expects
       // (push-out leaves the same), so the contact reads as contact and is not pushed again. The
@@ -421,7 +385,7 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
       // deep into something else met in the meantime.
       const double rest = restingPenetration(box.center);
       t = std::min(1.0, r.toi + std::min(rest / closing, 8.0 * rest / length));
-      first_toi_ = std::min(first_toi_, r.toi);
+      toi = r.toi;
     } else {
       // Already touching at the start (resting against it, or turned into it): sliding along it
       // or leaving it is free, and the end pose's test handles it. Only a motion that would take
@@ -430,14 +394,15 @@ double World::sweepToFirstContact(const Obb2& box, const Obb2& end_box,
       const double allowed = 0.5 * limit;
       if (!(closing > allowed)) continue;
       t = allowed / closing;
-      first_toi_ = std::min(first_toi_, t);
+      toi = t;
     }
-    first = std::min(first, t);
+    first = first ? SweptContact{std::min(first->stop, t), std::min(first->toi, toi)}
+                  : SweptContact{t, toi};
   }
   return first;
 }
 
-void World::moveContinuous(const CarState& start, const CarState& next) {
+double World::moveContinuous(const CarState& start, const CarState& next) {
   const double limit = half_min_extent_;
   const double travel = std::sqrt(next.speed * next.speed + next.slip * next.slip) / settings_.hz;
   // The turn within the step (both headings are wrapped, so the raw difference is within 2 pi).
@@ -449,7 +414,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
     // extent thick can be skipped) and costs one query at most.
     car_ = next;
     detect();
-    return;
+    return 1.0;
   }
   // Turning fast: sub-steps in which the corners sweep at most half the bound, each one turned in
   // place first and then translated along the new heading (the integrator's own order: the new
@@ -475,17 +440,17 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
     const Eigen::Vector2d displacement = target.position - turned.position;
     const Obb2 box = cardemo::carBox(turned, params_);
     const Obb2 end_box = cardemo::carBox(target, params_);
-    const double t = sweepToFirstContact(box, end_box, displacement);
-    if (t != kNoContact) {
+    if (const std::optional<SweptContact> contact =
+            sweepToFirstContact(box, end_box, displacement)) {
       // The rest of the step is dropped, as the sub-stepped scheme does at its first contact.
+      const double t = contact->stop;
       car_ = next;
       car_.heading = turned.heading;
       car_.direction = turned.direction;
       car_.position = t == 1.0 ? target.position : turned.position + displacement * t;
       stats_.substeps += i - 1;
-      contact_fraction_ = (static_cast<double>(i - 1) + first_toi_) / static_cast<double>(n);
       detect();
-      return;
+      return (static_cast<double>(i - 1) + contact->toi) / static_cast<double>(n);
     }
     pose = target;
   }
@@ -494,6 +459,7 @@ void World::moveContinuous(const CarState& start, const CarState& next) {
   // it by less than the bound) are tested at the end pose.
   car_ = next;
   detect();
+  return 1.0;
 }
 
 void World::resolveContacts() {
@@ -600,8 +566,7 @@ void World::recordHits() {
       }
       if (damage > 0 && !charged_before) ++damaging_crash_count_;
       health_ = std::max(0, health_ - damage);
-      hits_.push_back(
-          {frame_, id, colliderId(id), speed, damage, crash_of_[id], contact_fraction_});
+      hits_.push_back({frame_, id, colliderId(id), speed, damage, crash_of_[id]});
     }
     crash_until_[id] = frame_ + crash_window_frames_;
   }
@@ -629,23 +594,17 @@ void World::step(const InputFrame& input) {
   braking_ = start.speed != 0.0 && (in.handbrake || (in.up && in.down) ||
                                     (in.down && start.speed > 0.0) || (in.up && start.speed < 0.0));
   const double steer_target = steerTarget(params_, start.speed, in);
-  const CarState next = integrateCarToward(start, in, params_, 1.0 / settings_.hz, steer_target);
+  const CarState next = integrateCarToward(start, in, params_, 1.0 / settings_.hz, steer_target,
+                                           settings_.schemes.car_step);
   ++frame_;
   previous_contacts_.swap(contacts_);
   contacts_.clear();
   contact_speed_.clear();
-  contact_fraction_ = 1.0;
-  switch (settings_.schemes.collision) {
-    case CollisionDetection::kContinuous:  // the game's
-      moveContinuous(start, next);
-      break;
-    case CollisionDetection::kSubstepped:
-      moveWithSubsteps(start, next);
-      break;
-    case CollisionDetection::kDiscrete:
-      car_ = next;
-      detect();
-      break;
+  if (settings_.schemes.motion == nullptr) [[likely]] {
+    moveContinuous(start, next);
+  } else {
+    StepMotion motion(*this);
+    settings_.schemes.motion(motion, start, next);
   }
   mergeDetected();
   resolveContacts();
@@ -663,6 +622,28 @@ void World::step(const InputFrame& input) {
              (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
   resting_ = car_.speed == 0.0 && car_.slip == 0.0 && sameState(car_, start) && contacts_.empty() &&
              detected_.empty() && !wall_contact_ && have_detected_;
+}
+
+bool StepMotion::detectAt(const CarState& pose) {
+  world_.car_ = pose;
+  world_.detect();
+  return !world_.detected_.empty();
+}
+
+double StepMotion::continuous(const CarState& start, const CarState& next) {
+  return world_.moveContinuous(start, next);
+}
+
+void StepMotion::countSubsteps(std::int64_t n) {
+  world_.stats_.substeps += n;
+}
+
+double StepMotion::halfMinExtent() const {
+  return world_.half_min_extent_;
+}
+
+double StepMotion::dt() const {
+  return 1.0 / world_.settings_.hz;
 }
 
 }  // namespace cardemo

@@ -2,6 +2,7 @@
 /// The simulation: one player car among static cars, advanced in fixed steps.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,6 @@ struct HitEvent {
                                ///< belongs to already charged as much.
   std::int64_t crash = 0;      ///< The crash (1, 2, ...) this hit belongs to: re-touches of the
                                ///< same collider within the crash window share one.
-  double step_fraction = 1.0;  ///< Where in the step the contact was found: 1 = at the end pose;
-                               ///< less for a sub-step or a swept time of impact.
 };
 
 /// Work done so far (the summary's `stats`).
@@ -60,7 +59,7 @@ struct WorldStats {
   /// exceeded the distance pushed (SimulationSchemes::translation_bound).
   std::int64_t skipped_tests = 0;
   std::int64_t contacts = 0;  ///< Frames x colliders in contact, summed.
-  std::int64_t substeps = 0;  ///< Extra collision sub-steps (sub-stepped mode, or rotation).
+  std::int64_t substeps = 0;  ///< Extra collision sub-steps (turning fast, or a study's scheme).
   /// Detections skipped (a step detects once or more): the player's box was the last detected.
   std::int64_t skipped_queries = 0;
   /// Queries answered from the last grid query's grown box instead of the grid (the candidates
@@ -79,6 +78,30 @@ struct ActiveContact {
   bool slipped = false;  ///< A clipped corner the car was pushed sideways past (slipPastCorner).
 };
 
+class World;
+
+/// A step's motion as a MotionScheme drives it (SimulationSchemes::motion): the player's car placed
+/// at poses along the step, each tested for contact. Only World makes one, during its step.
+class StepMotion {
+ public:
+  /// Places the car at `pose` and detects contacts there; true when it touches anything.
+  bool detectAt(const CarState& pose);
+  /// The game's scheme: the motion swept to the first time of impact where the step is fast.
+  /// Returns the fraction of the step at which contact was found (1: at the end pose, or none).
+  double continuous(const CarState& start, const CarState& next);
+  /// Counts `n` extra collision sub-steps (WorldStats::substeps).
+  void countSubsteps(std::int64_t n);
+  /// Half the car's smaller side, metres: the motion that can pass nothing.
+  [[nodiscard]] double halfMinExtent() const;
+  /// The fixed step, seconds.
+  [[nodiscard]] double dt() const;
+
+ private:
+  friend class World;
+  explicit StepMotion(World& world) : world_(world) {}
+  World& world_;
+};
+
 /// The world: owns the scene, the broad phase (built once) and the player's car.
 class World {
  public:
@@ -87,7 +110,7 @@ class World {
   World(Scene scene, const WorldSettings& settings = {});
 
   /// Advances one fixed step: integrate; then, when the motion exceeds half the car's smaller
-  /// extent, sweep it to the first time of impact (or sub-step it, per settings); broad phase,
+  /// extent, sweep it to the first time of impact (or a study's scheme, per settings); broad phase,
   /// narrow phase on the candidates, push-out and velocity response, walls, then hits and health.
   /// Never allocates once warmed up and never throws.
   void step(const InputFrame& input);
@@ -141,6 +164,8 @@ class World {
   [[nodiscard]] std::uint64_t stateHash() const;
 
  private:
+  friend class StepMotion;
+
   Scene scene_;
   WorldSettings settings_;
   CarParams params_;
@@ -189,8 +214,6 @@ class World {
   std::vector<ActiveContact> detected_;  // contacts at the current pose (last detect())
   Obb2 detected_box_;                    // player box that detected_ belongs to
   Aabb2 detected_bounds_;                // its tight bounds
-  double contact_fraction_ = 1.0;        // fraction of this step at which contact was found
-  double first_toi_ = 0.0;               // earliest time of impact of the last sweep
   double half_min_extent_ = 0.0;         // half the car's smaller side: the fast-motion bound, m
   double half_diagonal_ = 0.0;           // centre-to-corner distance, m
   bool have_detected_ = false;
@@ -213,10 +236,16 @@ class World {
   void dropClearedSlips();
   void gatherCandidates(const Aabb2& query);
   void mergeDetected();
-  void moveWithSubsteps(const CarState& start, const CarState& next);
-  void moveContinuous(const CarState& start, const CarState& next);
-  [[nodiscard]] double sweepToFirstContact(const Obb2& box, const Obb2& end_box,
-                                           const Eigen::Vector2d& displacement);
+  // The game's motion scheme; returns the fraction of the step at which contact was found.
+  double moveContinuous(const CarState& start, const CarState& next);
+  // Where a sweep first meets a candidate: the fraction of the motion to stop at, and the time of
+  // impact (the earliest over the candidates, each in [0, 1]).
+  struct SweptContact {
+    double stop;
+    double toi;
+  };
+  [[nodiscard]] std::optional<SweptContact> sweepToFirstContact(
+      const Obb2& box, const Obb2& end_box, const Eigen::Vector2d& displacement);
   void resolveContacts();
   void recordHits();
   [[nodiscard]] int impactDamage(double speed) const;

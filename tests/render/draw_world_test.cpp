@@ -242,16 +242,6 @@ TEST(DrawWorld, DebugOverlayHighlightsCandidatesAndContacts) {
   }
 }
 
-TEST(DrawWorld, RotationProofBroadPhaseBoxIsTheOneShown) {
-  WorldSettings settings;
-  settings.schemes.broad_phase_box = BroadPhaseBox::kRotationProof;
-  World world(sceneWith({}, 0.0, 0.0, 30.0), settings);
-  const Aabb2 b = broadPhaseBox(world);
-  EXPECT_EQ(b, world.carBox().rotationProofAabb());
-  World tight(sceneWith({}, 0.0, 0.0, 30.0));
-  EXPECT_EQ(broadPhaseBox(tight), tight.carBox().aabb());
-}
-
 TEST(Camera, RoundTripNearAndFarFromTheOrigin) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> offset(-50.0, 50.0);

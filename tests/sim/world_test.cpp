@@ -230,26 +230,6 @@ TEST(World, StationaryCarSkipsBroadPhaseQueries) {
   EXPECT_EQ(world.candidates().size(), 1u);
 }
 
-TEST(World, RotationProofBoxGivesTheSameHitsWithMoreCandidates) {
-  const Scene scene = test::parkingLot(11);
-  WorldSettings proof;
-  proof.schemes.broad_phase_box = BroadPhaseBox::kRotationProof;
-  World tight(scene);
-  World wide(scene, proof);
-  for (const InputFrame& in : test::scriptedDrive(11, 4000)) {
-    tight.step(in);
-    wide.step(in);
-  }
-  ASSERT_GT(tight.hits().size(), 0u);
-  ASSERT_EQ(tight.hits().size(), wide.hits().size());
-  for (std::size_t i = 0; i < tight.hits().size(); ++i) {
-    EXPECT_EQ(tight.hits()[i].frame, wide.hits()[i].frame);
-    EXPECT_EQ(tight.hits()[i].id, wide.hits()[i].id);
-  }
-  EXPECT_EQ(tight.stateHash(), wide.stateHash());
-  EXPECT_GE(wide.stats().broadphase_candidates, tight.stats().broadphase_candidates);
-}
-
 TEST(World, RenderingAccessorsFollowTheInput) {
   World world(sceneWith({}));
   EXPECT_EQ(world.lastInput(), kNone);

@@ -7,7 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "tests/sim/closed_form_runs.hpp"
+#include "lab/sim/car_integrators.hpp"
+#include "lab/tests/sim/closed_form_runs.hpp"
 
 namespace cardemo {
 namespace {
@@ -145,7 +146,7 @@ TEST(ClosedForm, AlongArcStaysOnTheBicycleCircle) {
 TEST(ClosedForm, FineRk4RunsLandOnEveryReference) {
   for (const test::ClosedFormRun& run :
        {test::throttleRun(), test::coastRun(), test::circleRun(), test::acceleratingTurnRun()}) {
-    const test::RunError e = test::integrate(run, CarIntegrator::kRk4, 4000, 2.0);
+    const test::RunError e = test::integrate(run, stepRk4, 4000, 2.0);
     EXPECT_LT(e.max_error, 1e-10) << run.name;
   }
 }

@@ -26,16 +26,15 @@ struct RunError {
   double max_error = 0.0;    // metres, over every step
 };
 
-inline RunError integrate(const ClosedFormRun& run, CarIntegrator integrator, int hz,
+inline RunError integrate(const ClosedFormRun& run, CarStepScheme integrator, int hz,
                           double seconds) {
-  CarParams p = run.params;
-  p.integrator = integrator;
+  const CarParams& p = run.params;
   CarState s = run.start;
   const long steps = std::lround(seconds * hz);
   const double dt = 1.0 / hz;
   RunError e;
   for (long n = 1; n <= steps; ++n) {
-    s = integrateCar(s, run.input, p, dt);
+    s = integrateCar(s, run.input, p, dt, integrator);
     const double err = (s.position - run.exact(static_cast<double>(n) / hz).position).norm();
     e.max_error = std::max(e.max_error, err);
     e.final_error = err;
