@@ -23,17 +23,7 @@ std::uint64_t World::stateHash() const {
   h.addInt(static_cast<std::int64_t>(hits_.size()));
   // contacts_ is kept sorted by collider index, so this is the touching set in increasing order.
   for (const ActiveContact& c : contacts_) h.add(c.collider);
-  h.addInt(scrape_frames_);
-  h.addInt(scrape_damage_);
-  h.addInt(crash_count_);
-  // The crash windows still open (a later re-touch depends on them), in collider order.
-  for (std::size_t i = 0; i < crash_until_.size(); ++i) {
-    if (crash_until_[i] < frame_) continue;
-    h.add(static_cast<std::uint64_t>(i));
-    h.addInt(crash_until_[i]);
-    h.addInt(crash_charged_[i]);
-    h.addInt(crash_of_[i]);
-  }
+  ledger_.hashInto(h, frame_);
   return h.value();
 }
 

@@ -118,11 +118,7 @@ World::World(Scene scene, const WorldSettings& settings)
       colliders_(collidersOf(scene_)),
       grid_(colliders_.bounds()),
       health_(scene_.player.health),
-      touching_(colliders_.size(), 0),
-      crash_until_(colliders_.size(), -1),
-      crash_charged_(colliders_.size(), 0),
-      crash_of_(colliders_.size(), 0) {
-  crash_window_frames_ = std::llround(settings_.crash_window * settings_.hz);
+      ledger_(colliders_.size(), std::llround(settings_.crash_window * settings_.hz)) {
   car_.position = scene_.player.position;
   car_.heading = wrapRadians(radiansFromDegrees(scene_.player.heading_deg));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
@@ -138,11 +134,11 @@ World::World(Scene scene, const WorldSettings& settings)
   // Warm every per-step buffer now; they only grow past this in crowded pile-ups.
   const std::size_t expected = std::min<std::size_t>(colliders_.size(), 256);
   candidates_.reserve(expected);
-  cover_.reserve(expected);
+  cover_.ids.reserve(expected);
   contacts_.reserve(expected);
   previous_contacts_.reserve(expected);
   contact_speed_.reserve(expected);
-  detected_.reserve(expected);
+  detected_.contacts.reserve(expected);
   pushed_ids_.reserve(expected);
   // Sized, not only reserved: the two swap at each push, and a narrow phase then only grows one
   // when the candidates outnumber it.
@@ -169,8 +165,8 @@ Obb2 World::carBox() const {
 void World::detect() {
   const Obb2 box = carBox();
   // Same pose as the last narrow phase: its candidates and its answer still hold (a sweep, which
-  // replaces the candidates, clears have_detected_).
-  if (have_detected_ && sameBox(box, detected_box_)) {
+  // replaces the candidates, clears detected_.valid).
+  if (detected_.valid && sameBox(box, detected_.box)) {
     ++stats_.skipped_queries;
     return;
   }
@@ -183,12 +179,12 @@ void World::detectAfterPush(double pushed) {
   // A push moves the box without turning it, and a translation by d changes the gap along every
   // separating axis by at most |d|, so the SAT separation (the largest gap) by at most |d| too: a
   // candidate farther than the push (plus rounding) is still separated and need not be tested.
-  if (!settings_.schemes.translation_bound || !have_detected_) {
+  if (!settings_.schemes.translation_bound || !detected_.valid) {
     detect();
     return;
   }
   const Obb2 box = carBox();
-  assert(box.axis == detected_box_.axis && box.half == detected_box_.half);
+  assert(box.axis == detected_.box.axis && box.half == detected_.box.half);
   pushed_ids_.swap(candidates_);
   pushed_gaps_.swap(candidate_gaps_);
   const Aabb2 bounds = box.aabb();
@@ -198,27 +194,27 @@ void World::detectAfterPush(double pushed) {
 
 void World::gatherCandidates(const Aabb2& query) {
   // NaN-safe: a NaN query is never contained, and the grid finds nothing for it.
-  if (have_cover_ && cover_box_.contains(query)) {
+  if (cover_.valid && cover_.box.contains(query)) {
     ++stats_.reused_queries;
   } else {
     const Eigen::Vector2d margin(kCoverMargin, kCoverMargin);
-    cover_box_ = {query.min - margin, query.max + margin};
-    grid_.query(cover_box_, cover_);
-    have_cover_ = true;
+    cover_.box = {query.min - margin, query.max + margin};
+    grid_.query(cover_.box, cover_.ids);
+    cover_.valid = true;
     ++stats_.broadphase_queries;
   }
   // Every box that touches the query touches the cover box, so these are exactly the ids a grid
   // query on `query` returns (the grid's own closed-interval test), in the same order.
   candidates_.clear();
-  for (const std::uint32_t id : cover_) {
+  for (const std::uint32_t id : cover_.ids) {
     if (colliders_.bounds(id).overlaps(query)) candidates_.push_back(id);
   }
   stats_.broadphase_candidates += static_cast<std::int64_t>(candidates_.size());
 }
 
 inline double* World::beginNarrowPhase(const Aabb2& bounds) {
-  detected_.clear();
-  detected_bounds_ = bounds;
+  detected_.contacts.clear();
+  detected_.bounds = bounds;
   if (candidate_gaps_.size() < candidates_.size()) candidate_gaps_.resize(candidates_.size());
   return candidate_gaps_.data();
 }
@@ -228,9 +224,10 @@ inline double* World::beginNarrowPhase(const Aabb2& bounds) {
   SatResult2 r = colliders_.visit(id, [&box](const auto& s) { return collidePlayer(box, s); });
   gap = r.separation;
   if (r.separation <= 0.0) {
-    const bool seam = touching_[id] == 0 && !previous_contacts_.empty() && smoothSeam(box, id, r);
+    const bool seam =
+        !ledger_.touching(id) && !previous_contacts_.empty() && smoothSeam(box, id, r);
     const bool slipped = !seam && slipPastCorner(box, id, r);
-    detected_.push_back({id, r.normal, r.separation, slipped});
+    detected_.contacts.push_back({id, r.normal, r.separation, slipped});
   }
 }
 
@@ -238,8 +235,8 @@ void World::narrowPhase(const Obb2& box, const Aabb2& bounds) {
   double* const gaps = beginNarrowPhase(bounds);
   for (std::size_t k = 0; k < candidates_.size(); ++k) testCandidate(box, candidates_[k], gaps[k]);
   stats_.narrowphase_tests += static_cast<std::int64_t>(candidates_.size());
-  detected_box_ = box;
-  have_detected_ = true;
+  detected_.box = box;
+  detected_.valid = true;
 }
 
 void World::narrowPhaseAfterPush(const Obb2& box, const Aabb2& bounds, double moved) {
@@ -256,8 +253,8 @@ void World::narrowPhaseAfterPush(const Obb2& box, const Aabb2& bounds, double mo
       testCandidate(box, id, gaps[k]);
     }
   }
-  detected_box_ = box;
-  have_detected_ = true;
+  detected_.box = box;
+  detected_.valid = true;
 }
 
 bool World::smoothSeam(const Obb2& box, std::uint32_t id, SatResult2& r) const {
@@ -328,7 +325,7 @@ void World::dropClearedSlips() {
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const std::uint32_t id = contacts_[k].collider;
     const bool cleared = contacts_[k].slipped &&
-                         std::none_of(detected_.begin(), detected_.end(),
+                         std::none_of(detected_.contacts.begin(), detected_.contacts.end(),
                                       [id](const ActiveContact& c) { return c.collider == id; });
     if (cleared) continue;
     contacts_[kept] = contacts_[k];
@@ -340,9 +337,9 @@ void World::dropClearedSlips() {
 }
 
 void World::mergeDetected() {
-  if (detected_.empty()) return;
+  if (detected_.contacts.empty()) return;
   const std::size_t first_new = contacts_.size();
-  for (const ActiveContact& c : detected_) {
+  for (const ActiveContact& c : detected_.contacts) {
     const bool known =
         std::any_of(contacts_.begin(), contacts_.end(),
                     [&c](const ActiveContact& k) { return k.collider == c.collider; });
@@ -365,7 +362,7 @@ std::optional<World::SweptContact> World::sweepToFirstContact(const Obb2& box, c
   const SimulationSchemes& schemes = settings_.schemes;
   gatherCandidates(
       queryBox(box, box.aabb(), schemes).merged(queryBox(end_box, end_box.aabb(), schemes)));
-  have_detected_ = false;
+  detected_.valid = false;
 
   const double limit = half_min_extent_;
   const double length = std::sqrt(displacement.squaredNorm());
@@ -463,9 +460,9 @@ double World::moveContinuous(const CarState& start, const CarState& next) {
 }
 
 void World::resolveContacts() {
-  for (int pass = 0; pass < settings_.max_push_iterations && !detected_.empty(); ++pass) {
-    const ActiveContact* deepest = &detected_.front();
-    for (const ActiveContact& c : detected_) {
+  for (int pass = 0; pass < settings_.max_push_iterations && !detected_.contacts.empty(); ++pass) {
+    const ActiveContact* deepest = &detected_.contacts.front();
+    for (const ActiveContact& c : detected_.contacts) {
       if (c.separation < deepest->separation) deepest = &c;
     }
     // Only the excess over the resting depth is pushed out, however small, so the pose after the
@@ -482,7 +479,7 @@ void World::resolveContacts() {
   }
   // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
   // keepInsideWalls would not move the car, so it is not called.
-  wall_contact_ = scene_.bounds && !scene_.bounds->contains(detected_bounds_) &&
+  wall_contact_ = scene_.bounds && !scene_.bounds->contains(detected_.bounds) &&
                   keepInsideWalls(car_, params_, *scene_.bounds, wall_normal_);
   if (wall_contact_) {
     detect();
@@ -502,7 +499,6 @@ int World::impactDamage(double speed) const {
 }
 
 void World::chargeScrape() {
-  // Damage by time, counted in whole frames so that it is exact: floor(frames * rate / hz) in all.
   const Eigen::Vector2d v = car_.velocity();
   bool scraping = false;
   for (const ActiveContact& c : contacts_) {
@@ -515,13 +511,7 @@ void World::chargeScrape() {
     }
   }
   if (!scraping) return;
-  ++scrape_frames_;
-  const int due =
-      static_cast<int>(std::min(std::floor(static_cast<double>(scrape_frames_) *
-                                           settings_.scrape_damage_per_s / settings_.hz),
-                                1e9));
-  health_ = std::max(0, health_ - (due - scrape_damage_));
-  scrape_damage_ = due;
+  health_ = std::max(0, health_ - ledger_.scrapeFrame(settings_.scrape_damage_per_s, settings_.hz));
 }
 
 Eigen::Vector2d World::surfaceNormal() const {
@@ -548,31 +538,19 @@ void World::recordHits() {
   }
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const std::uint32_t id = contacts_[k].collider;
-    if (touching_[id] == 0) {
+    if (!ledger_.touching(id)) {
       // A hit: the first frame of contact. Within the crash window of this collider it is the same
       // crash, which costs only what this impact is worth beyond what the crash already took.
       const double speed = contact_speed_[k];
-      const int worth = impactDamage(speed);
-      int damage = worth;
-      // A crash has cost health once anything is charged to it.
-      bool charged_before = false;
-      if (frame_ <= crash_until_[id]) {
-        charged_before = crash_charged_[id] > 0;
-        damage = std::max(0, worth - crash_charged_[id]);
-        crash_charged_[id] += damage;
-      } else {
-        crash_of_[id] = ++crash_count_;
-        crash_charged_[id] = worth;
-      }
-      if (damage > 0 && !charged_before) ++damaging_crash_count_;
-      health_ = std::max(0, health_ - damage);
-      hits_.push_back({frame_, id, colliderId(id), speed, damage, crash_of_[id]});
+      const CrashCharge charge = ledger_.hit(id, frame_, impactDamage(speed));
+      health_ = std::max(0, health_ - charge.damage);
+      hits_.push_back({frame_, id, colliderId(id), speed, charge.damage, charge.crash});
     }
-    crash_until_[id] = frame_ + crash_window_frames_;
+    ledger_.touch(id, frame_);
   }
   chargeScrape();
-  for (const ActiveContact& c : previous_contacts_) touching_[c.collider] = 0;
-  for (const ActiveContact& c : contacts_) touching_[c.collider] = 1;
+  for (const ActiveContact& c : previous_contacts_) ledger_.setTouching(c.collider, false);
+  for (const ActiveContact& c : contacts_) ledger_.setTouching(c.collider, true);
   stats_.contacts += static_cast<std::int64_t>(contacts_.size());
 }
 
@@ -621,13 +599,13 @@ void World::step(const InputFrame& input) {
   sliding_ = grip_limited || std::abs(car_.slip) > params_.skid_slip ||
              (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
   resting_ = car_.speed == 0.0 && car_.slip == 0.0 && sameState(car_, start) && contacts_.empty() &&
-             detected_.empty() && !wall_contact_ && have_detected_;
+             detected_.contacts.empty() && !wall_contact_ && detected_.valid;
 }
 
 bool StepMotion::detectAt(const CarState& pose) {
   world_.car_ = pose;
   world_.detect();
-  return !world_.detected_.empty();
+  return !world_.detected_.contacts.empty();
 }
 
 double StepMotion::continuous(const CarState& start, const CarState& next) {

@@ -10,6 +10,7 @@
 #include "collision/narrow_phase.hpp"
 #include "collision/static_colliders.hpp"
 #include "sim/car.hpp"
+#include "sim/crash_ledger.hpp"
 #include "sim/input_frame.hpp"
 #include "sim/scene.hpp"
 #include "sim/simulation_schemes.hpp"
@@ -138,12 +139,12 @@ class World {
   /// True once health has reached 0 (input is ignored from then on).
   [[nodiscard]] bool gameOver() const { return health_ <= 0; }
   /// Health taken by scraping so far.
-  [[nodiscard]] int scrapeDamage() const { return scrape_damage_; }
+  [[nodiscard]] int scrapeDamage() const { return ledger_.scrapeDamage(); }
   /// Crashes so far (a crash is one or more hits of one collider, see HitEvent::crash).
-  [[nodiscard]] std::int64_t crashes() const { return crash_count_; }
+  [[nodiscard]] std::int64_t crashes() const { return ledger_.crashes(); }
   /// Crashes that cost health: each counts once, from its first hit with damage (a touch under
   /// the damage threshold, or a bounce inside a crash already charged, adds none).
-  [[nodiscard]] std::int64_t damagingCrashes() const { return damaging_crash_count_; }
+  [[nodiscard]] std::int64_t damagingCrashes() const { return ledger_.damagingCrashes(); }
   /// Every hit so far, in order.
   [[nodiscard]] const std::vector<HitEvent>& hits() const { return hits_; }
   /// Contacts at the current frame.
@@ -183,40 +184,39 @@ class World {
   std::vector<ActiveContact> contacts_;
   std::vector<std::uint32_t> candidates_;
   // Entry k, for each candidates_[k] after a narrow phase: a lower bound on its separation from
-  // detected_box_, metres (the SAT separation, or for a skipped test the bound carried over). It
+  // detected_.box, metres (the SAT separation, or for a skipped test the bound carried over). It
   // can be longer than candidates_; the entries past it are unused.
   std::vector<double> candidate_gaps_;
   // detectAfterPush's scratch: the candidates before the push, and their gaps.
   std::vector<std::uint32_t> pushed_ids_;
   std::vector<double> pushed_gaps_;
   double verdict_scale_ = 0.0;  // largest |coordinate| of the colliders' bounds, for the margin
-  std::vector<std::uint8_t> touching_;  // per collider: in contact at the previous frame
-  // Per collider: the last frame of its crash window (-1: none), the damage that crash has charged
-  // so far, and its crash number.
-  std::vector<std::int64_t> crash_until_;
-  std::vector<int> crash_charged_;
-  std::vector<std::int64_t> crash_of_;
-  std::int64_t crash_count_ = 0;
-  std::int64_t damaging_crash_count_ = 0;
-  std::int64_t crash_window_frames_ = 0;
-  std::int64_t scrape_frames_ = 0;  // frames spent scraping so far
-  int scrape_damage_ = 0;           // damage charged for them
-  // The last grid query ran on cover_box_, the query box grown by kCoverMargin, and found cover_
-  // (in id order). A query box inside it is answered from cover_ (gatherCandidates).
-  Aabb2 cover_box_;
-  bool have_cover_ = false;
-  QueryIds cover_;
+  CrashLedger ledger_;          // touching flags, crash windows and charges, scrape damage
+  // The last grid query: it ran on `box`, the query box grown by kCoverMargin, and found `ids` (in
+  // id order). A query box inside it is answered from `ids` (gatherCandidates).
+  struct GridCover {
+    Aabb2 box;
+    bool valid = false;
+    QueryIds ids;
+  };
+  GridCover cover_;
   WorldStats stats_;
 
   // Per-step scratch (reserved once, so step() does not allocate when warm).
-  std::vector<ActiveContact> previous_contacts_;  // last frame's contacts_, to clear touching_
-  std::vector<double> contact_speed_;    // closing speed of contacts_[k] when first detected
-  std::vector<ActiveContact> detected_;  // contacts at the current pose (last detect())
-  Obb2 detected_box_;                    // player box that detected_ belongs to
-  Aabb2 detected_bounds_;                // its tight bounds
-  double half_min_extent_ = 0.0;         // half the car's smaller side: the fast-motion bound, m
-  double half_diagonal_ = 0.0;           // centre-to-corner distance, m
-  bool have_detected_ = false;
+  std::vector<ActiveContact>
+      previous_contacts_;              // last frame's contacts_, to clear their touching flags
+  std::vector<double> contact_speed_;  // closing speed of contacts_[k] when first detected
+  // The last narrow phase (detect()): the contacts at the current pose, the player box and tight
+  // bounds they belong to, and whether it has run since the candidates were last replaced.
+  struct Detection {
+    std::vector<ActiveContact> contacts;
+    Obb2 box;
+    Aabb2 bounds;
+    bool valid = false;
+  };
+  Detection detected_;
+  double half_min_extent_ = 0.0;  // half the car's smaller side: the fast-motion bound, m
+  double half_diagonal_ = 0.0;    // centre-to-corner distance, m
   bool resting_ =
       false;  // the last step left the car bitwise where it was, at rest, touching nothing
 
