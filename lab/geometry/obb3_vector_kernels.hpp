@@ -8,16 +8,19 @@
 // of the same source has thirty-two, so it spills less, and its operations are the same IEEE
 // ones, so its bits are too. -ffp-contract=off keeps every product rounded on its own.
 //
-// Includes nothing but the intrinsics and obb3_lanes.hpp, for the reason given in
-// kernels/batch_avx2.cpp; everything here has internal linkage, so the two builds cannot be mixed
-// up by the linker.
+// Includes nothing but the intrinsics, obb3_lanes.hpp and lanes_avx2.hpp, for the reason given in
+// lab/kernels/batch_avx2.cpp; everything here has internal linkage, so the two builds cannot be
+// mixed up by the linker.
 
 #include <immintrin.h>
 
 #include "lab/geometry/obb3_lanes.hpp"
+#include "lab/kernels/lanes_avx2.hpp"
 
 namespace cardemo::obb3_detail {
 namespace {
+
+using batch_detail::largestLane;
 
 // Lane k of next1(u) is lane k + 1 (mod 3) of u, of next2(u) lane k + 2; lane 3 stays.
 [[gnu::always_inline]] inline __m256d next1(__m256d u) {
@@ -35,10 +38,6 @@ namespace {
 // Lane 3 set to -infinity, so that it never wins a maximum.
 [[gnu::always_inline]] inline __m256d withoutPadding(__m256d u) {
   return _mm256_blend_pd(u, splat(-__builtin_inf()), 0b1000);
-}
-[[gnu::always_inline]] inline double largestLane(__m256d v) {
-  const __m128d half = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
-  return _mm_cvtsd_f64(_mm_max_pd(half, _mm_unpackhi_pd(half, half)));
 }
 
 // obb3.cpp's Pose3 and FastEdges, as registers: lane k of t is a_k . d, lane k of col[j] is

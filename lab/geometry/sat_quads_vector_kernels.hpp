@@ -8,16 +8,19 @@
 // AVX-512VL build of the same source has thirty-two, so it spills less, and its operations are the
 // same IEEE ones, so its bits are too. -ffp-contract=off keeps every product rounded on its own.
 //
-// Includes nothing but the intrinsics and sat_quads.hpp, for the reason given in
-// kernels/batch_avx2.cpp; everything here has internal linkage, so the two builds cannot be mixed
-// up by the linker.
+// Includes nothing but the intrinsics, sat_quads.hpp and lanes_avx2.hpp, for the reason given in
+// lab/kernels/batch_avx2.cpp; everything here has internal linkage, so the two builds cannot be
+// mixed up by the linker.
 
 #include <immintrin.h>
 
 #include "lab/geometry/sat_quads.hpp"
+#include "lab/kernels/lanes_avx2.hpp"
 
 namespace cardemo::sat_detail {
 namespace {
+
+using batch_detail::largestLane;
 
 // Lanes 0, 2 (A's axes) from a, lanes 1, 3 (B's) from b.
 [[gnu::always_inline]] inline __m256d aLanesFrom(__m256d a, __m256d b) {
@@ -26,11 +29,6 @@ namespace {
 
 [[gnu::always_inline]] inline __m256d project(__m256d nx, __m256d ny, __m256d x, __m256d y) {
   return _mm256_add_pd(_mm256_mul_pd(nx, x), _mm256_mul_pd(ny, y));
-}
-
-[[gnu::always_inline]] inline double largestLane(__m256d v) {
-  const __m128d half = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
-  return _mm_cvtsd_f64(_mm_max_pd(half, _mm_unpackhi_pd(half, half)));
 }
 
 // The largest lane, in every lane.

@@ -16,46 +16,9 @@
 #include "lab/kernels/batch2_filter.hpp"
 #include "lab/kernels/batch3_filter.hpp"
 #include "lab/kernels/box_fields.hpp"
+#include "lab/kernels/lanes_avx2.hpp"
 
 namespace cardemo::batch_detail {
-namespace {
-
-struct Float8 {
-  static constexpr std::size_t kWidth = 8;
-  __m256 v;
-  static Float8 load(const float* p) { return {_mm256_loadu_ps(p)}; }
-  static Float8 splat(float x) { return {_mm256_set1_ps(x)}; }
-};
-
-[[gnu::always_inline]] inline Float8 operator+(Float8 a, Float8 b) {
-  return {_mm256_add_ps(a.v, b.v)};
-}
-[[gnu::always_inline]] inline Float8 operator-(Float8 a, Float8 b) {
-  return {_mm256_sub_ps(a.v, b.v)};
-}
-[[gnu::always_inline]] inline Float8 operator*(Float8 a, Float8 b) {
-  return {_mm256_mul_ps(a.v, b.v)};
-}
-[[gnu::always_inline]] inline Float8 fmadd(Float8 a, Float8 b, Float8 c) {
-  return {_mm256_fmadd_ps(a.v, b.v, c.v)};
-}
-[[gnu::always_inline]] inline Float8 fmsub(Float8 a, Float8 b, Float8 c) {
-  return {_mm256_fmsub_ps(a.v, b.v, c.v)};
-}
-[[gnu::always_inline]] inline Float8 fnmadd(Float8 a, Float8 b, Float8 c) {
-  return {_mm256_fnmadd_ps(a.v, b.v, c.v)};
-}
-[[gnu::always_inline]] inline Float8 abs(Float8 a) {
-  return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)};
-}
-[[gnu::always_inline]] inline Float8 max(Float8 a, Float8 b) {
-  return {_mm256_max_ps(a.v, b.v)};
-}
-[[gnu::always_inline]] inline unsigned gtBits(Float8 a, Float8 b) {
-  return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)));
-}
-
-}  // namespace
 
 std::size_t overlap2FilteredAvx2(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
                                  const Box2FilterArrays& fb, std::size_t first, std::size_t last,
