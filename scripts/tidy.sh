@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs clang-tidy (the checks in .clang-tidy) over every source file of src/ that the build compiles,
+# Runs clang-tidy (the checks in .clang-tidy) over every source file of src/ and lab/ (not its tests)
+# that the build compiles,
 # in parallel, with that build's flags (compile_commands.json), and fails on any warning.
 #   scripts/tidy.sh [BUILD_DIR]     (default: build-tidy; configured here when it has no database)
 # The build must not be a unity build: its database lists the unity sources, not the files of src/
@@ -22,13 +23,17 @@ tidy=$(command -v clang-tidy-14 || command -v clang-tidy)
 jobs=${CARDEMO_TIDY_JOBS:-$(nproc)}
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-# The src/ files the build compiles (optional parts such as SDL or Box2D only when configured).
-files=$(python3 - "$build/compile_commands.json" "$root/src/" <<'PY'
+# The src/ and lab/ files the build compiles (optional parts such as SDL or Box2D only when
+# configured; lab/tests is a test suite, as tests/ is).
+files=$(python3 - "$build/compile_commands.json" "$root/src/" "$root/lab/" <<'PY'
 import json, os, sys
 entries = json.load(open(sys.argv[1]))
-src = os.path.realpath(sys.argv[2])
+src, lab = (os.path.realpath(d) for d in sys.argv[2:4])
+def wanted(f):
+    return f.startswith(src + os.sep) or (f.startswith(lab + os.sep) and
+                                          not f.startswith(os.path.join(lab, "tests") + os.sep))
 print("\n".join(sorted({os.path.realpath(e["file"]) for e in entries
-                        if os.path.realpath(e["file"]).startswith(src + os.sep)})))
+                        if wanted(os.path.realpath(e["file"]))})))
 PY
 )
 start=$(date +%s)
