@@ -4,7 +4,7 @@
 /// elsewhere) and four per AVX2 instruction. Both find the same boxes in the same order.
 //
 // Free of Eigen and of the standard library's inline code, so the AVX2 translation unit
-// instantiates nothing the linker could share with the rest (as kernels/batch_entry.hpp).
+// instantiates nothing the linker could share with the rest (as lab/kernels/batch_entry.hpp).
 
 #include <cstddef>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // after geometry/batch_path says the CPU has it.
 //
 // Includes nothing but the intrinsics and the scan headers, for the reason given in
-// kernels/batch_avx2.cpp.
+// lab/kernels/batch_avx2.cpp.
 
 #if defined(CARDEMO_BATCH_AVX2)
 #if !defined(__AVX2__)
