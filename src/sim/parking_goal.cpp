@@ -12,16 +12,23 @@ namespace cardemo {
 ParkingCheck checkParking(const Goal& goal, const Eigen::Vector2d& position,
                           const Eigen::Vector2d& direction, double speed) {
   ParkingCheck c;
-  c.distance = (position - goal.bay.center).norm();
+  const Eigen::Vector2d offset = goal.bay.center - position;
+  c.distance = offset.norm();
+  c.ahead = offset.dot(direction);
+  c.left = direction.x() * offset.y() - direction.y() * offset.x();
   const Eigen::Vector2d bay_dir = unitFromDegrees(goal.bay.heading_deg);
   const double cross = bay_dir.x() * direction.y() - bay_dir.y() * direction.x();
   const double dot = bay_dir.dot(direction);
-  double error = degreesFromRadians(std::abs(trig::atan2(cross, dot)));
-  if (goal.either_direction) error = std::min(error, 180.0 - error);
-  c.heading_error_deg = error;
+  // Signed angle from the bay's heading to the car's, counter-clockwise positive.
+  double off = degreesFromRadians(trig::atan2(cross, dot));
+  // Facing the other way is as good, and nearer, past a quarter turn.
+  if (goal.either_direction && std::abs(off) > 90.0) off = off > 0.0 ? off - 180.0 : off + 180.0;
+  c.heading_error_deg = std::abs(off);
+  c.turn_deg = -off;
+  c.speed = std::abs(speed);
   c.position_ok = c.distance <= goal.position_tolerance;
-  c.heading_ok = error <= goal.heading_tolerance_deg;
-  c.speed_ok = std::abs(speed) <= goal.max_speed;
+  c.heading_ok = c.heading_error_deg <= goal.heading_tolerance_deg;
+  c.speed_ok = c.speed <= goal.max_speed;
   return c;
 }
 
@@ -54,8 +61,13 @@ ParkingChallenge::ParkingChallenge(const Goal& goal, double hz, int start_health
 
 void ParkingChallenge::observe(const World& world) {
   if (over()) return;
-  frames_ = world.frame();
   const CarState& car = world.car();
+  if (!start_position_) {
+    start_position_ = car.position;
+  } else if (!clock_start_ && car.position != *start_position_) {
+    clock_start_ = frame_;  // the last frame observed at the start: the step from it moved the car
+  }
+  frame_ = world.frame();
   last_ = checkParking(goal_, car.position, car.direction, car.speed);
   if (world.gameOver()) {
     wrecked_ = true;
@@ -64,27 +76,31 @@ void ParkingChallenge::observe(const World& world) {
   if (!last_.parked()) {
     hold_start_.reset();
   } else if (!hold_start_) {
-    hold_start_ = frames_;
+    hold_start_ = frame_;
   }
-  if (hold_start_ && frames_ - *hold_start_ >= hold_frames_) {
-    parked_frame_ = frames_;
+  if (hold_start_ && frame_ - *hold_start_ >= hold_frames_) {
+    parked_frame_ = frame_;
     ParkingScore s;
-    s.frames = frames_;
+    s.frames = clockFrames();
     s.seconds = seconds();
     s.damage = start_health_ - world.health();
     s.stars = starsFor(goal_, s.seconds, s.damage);
     score_ = s;
     return;
   }
-  if (limit_frames_ && frames_ >= *limit_frames_) timed_out_ = true;
+  if (limit_frames_ && clockFrames() >= *limit_frames_) timed_out_ = true;
+}
+
+std::int64_t ParkingChallenge::clockFrames() const {
+  return clock_start_ ? frame_ - *clock_start_ : 0;
 }
 
 double ParkingChallenge::seconds() const {
-  return static_cast<double>(frames_) / hz_;
+  return static_cast<double>(clockFrames()) / hz_;
 }
 
 double ParkingChallenge::heldSeconds() const {
-  return hold_start_ ? static_cast<double>(frames_ - *hold_start_) / hz_ : 0.0;
+  return hold_start_ ? static_cast<double>(frame_ - *hold_start_) / hz_ : 0.0;
 }
 
 double ParkingChallenge::holdSeconds() const {

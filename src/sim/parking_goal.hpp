@@ -1,6 +1,7 @@
 #pragma once
-/// The parking challenge: whether the car is parked in the goal bay, the timer and the score.
-/// Observes a World after each step and never changes it (the state hash does not include it).
+/// The parking challenge: whether the car is parked in the goal bay, the level clock and the
+/// score. Observes a World after each step and never changes it (the state hash does not include
+/// it).
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -20,6 +21,12 @@ struct ParkingCheck {
   bool position_ok = false;        ///< distance <= position_tolerance.
   bool heading_ok = false;         ///< heading_error_deg <= heading_tolerance_deg.
   bool speed_ok = false;           ///< |speed| <= max_speed.
+  double ahead = 0.0;  ///< The bay's centre ahead of the car's along its heading, m (< 0: behind).
+  double left = 0.0;   ///< The bay's centre to the car's left, m (< 0: to its right).
+  double turn_deg = 0.0;  ///< Turn that brings the car's heading onto the nearest accepted one,
+                          ///< degrees, > 0 to the left (counter-clockwise); |turn_deg| is
+                          ///< heading_error_deg.
+  double speed = 0.0;     ///< |speed|, m/s.
 
   /// All three hold: the car is parked.
   [[nodiscard]] bool parked() const { return position_ok && heading_ok && speed_ok; }
@@ -31,7 +38,7 @@ struct ParkingCheck {
 
 /// The result of a run against a goal.
 struct ParkingScore {
-  std::int64_t frames = 0;  ///< Frame at which the car parked.
+  std::int64_t frames = 0;  ///< Frames on the level clock when the car parked (from its start).
   double seconds = 0.0;     ///< frames / hz.
   int damage = 0;           ///< Health lost up to that frame.
   int stars = 0;            ///< 1 + (no damage) + (within par time, or no par time given).
@@ -54,6 +61,10 @@ inline constexpr int kMaxStars = 3;
 [[nodiscard]] std::int64_t holdFrames(const Goal& goal, double hz);
 
 /// A parking challenge run beside a World: call observe() on frame 0 and after every step.
+///
+/// The level clock starts when the car first moves: at the last frame the car stood at the
+/// position of the first frame observed, so a player reading the task loses no time, and a car
+/// driven from frame 0 has the clock started at frame 0. The time limit counts from there too.
 class ParkingChallenge {
  public:
   /// A challenge for `goal`; `hz` converts frames to seconds, `start_health` measures damage.
@@ -73,9 +84,13 @@ class ParkingChallenge {
   [[nodiscard]] bool wrecked() const { return wrecked_; }
   /// Parked, timed out or wrecked: the run is decided.
   [[nodiscard]] bool over() const { return parked_frame_ || timed_out_ || wrecked_; }
-  /// Frames observed so far (the timer), stopped when the challenge is over.
-  [[nodiscard]] std::int64_t frames() const { return frames_; }
-  /// The timer in seconds.
+  /// The world frame last observed (stops changing once the challenge is over).
+  [[nodiscard]] std::int64_t frame() const { return frame_; }
+  /// The frame at which the level clock started, once the car has moved.
+  [[nodiscard]] std::optional<std::int64_t> clockStart() const { return clock_start_; }
+  /// Frames on the level clock: since clockStart(), 0 before; stopped when the challenge is over.
+  [[nodiscard]] std::int64_t clockFrames() const;
+  /// The level clock in seconds (the timer).
   [[nodiscard]] double seconds() const;
   /// First frame of the current unbroken run of passing checks (the hold), if one is under way.
   [[nodiscard]] std::optional<std::int64_t> holdStart() const { return hold_start_; }
@@ -95,7 +110,9 @@ class ParkingChallenge {
   std::optional<std::int64_t> limit_frames_;
   std::int64_t hold_frames_;
   std::optional<std::int64_t> hold_start_;
-  std::int64_t frames_ = 0;
+  std::optional<Eigen::Vector2d> start_position_;
+  std::optional<std::int64_t> clock_start_;
+  std::int64_t frame_ = 0;
   ParkingCheck last_;
   std::optional<std::int64_t> parked_frame_;
   std::optional<ParkingScore> score_;

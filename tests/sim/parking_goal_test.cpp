@@ -181,8 +181,9 @@ void expectParksAfterTheHold(const Scene& scene,
   ASSERT_TRUE(challenge.parkedFrame().has_value());
   EXPECT_EQ(*challenge.parkedFrame(), expected);
   ASSERT_TRUE(challenge.score().has_value());
-  EXPECT_EQ(challenge.score()->frames, expected);
-  EXPECT_EQ(challenge.frames(), expected);
+  // The score counts from the clock's start: the last frame before the car first moved.
+  EXPECT_EQ(challenge.score()->frames, expected - challenge.clockStart().value_or(expected));
+  EXPECT_EQ(challenge.frame(), expected);
   if (parked_at != nullptr) *parked_at = expected;
 }
 
@@ -215,7 +216,8 @@ TEST(ParkingChallenge, ScoreAndTimerStopAtTheParkedFrame) {
   // Observing more frames changes nothing once parked.
   world.step(InputFrame{true, false, false, false});
   challenge.observe(world);
-  EXPECT_EQ(challenge.frames(), parked);
+  EXPECT_EQ(challenge.frame(), parked);
+  EXPECT_EQ(challenge.clockStart(), 0);  // the throttle was held from frame 0
   EXPECT_EQ(challenge.seconds(), static_cast<double>(parked) / 120.0);
 }
 
@@ -236,6 +238,10 @@ TEST(ParkingChallenge, StartingInTheBayAtRestParksAfterTheHold) {
   world.step(InputFrame{});
   challenge.observe(world);
   EXPECT_EQ(challenge.parkedFrame(), 60);
+  // The car never moved, so the level clock never started: 0 s.
+  EXPECT_FALSE(challenge.clockStart().has_value());
+  EXPECT_EQ(challenge.score()->frames, 0);
+  EXPECT_EQ(challenge.score()->seconds, 0.0);
 
   scene.goal->hold_time = 0.0;
   const World again(scene);
@@ -286,20 +292,87 @@ TEST(ParkingChallenge, ABrokenHoldStartsAgain) {
   EXPECT_GT(parked, 120);  // not at 60: the hold restarted after the push
 }
 
-TEST(ParkingChallenge, TimeLimitEndsTheRunAtItsFrame) {
+// The time limit counts on the level clock: from the last frame before the car first moved.
+TEST(ParkingChallenge, TimeLimitEndsTheRunOnTheLevelClock) {
   Scene scene = driveInScene();
-  scene.goal->time_limit = 0.5;  // 60 frames at 120 Hz
+  scene.goal->bay.center = {40.0, 0.0};  // out of reach in the time
+  scene.goal->time_limit = 0.5;          // 60 frames at 120 Hz
   World world(scene);
   ParkingChallenge challenge(*scene.goal, 120.0, 100);
   challenge.observe(world);
-  while (!challenge.over()) {
+  for (int i = 0; i < 300; ++i) {  // 2.5 s at a standstill: the clock does not run
     world.step(InputFrame{});
+    challenge.observe(world);
+  }
+  EXPECT_FALSE(challenge.over());
+  EXPECT_EQ(challenge.seconds(), 0.0);
+  while (!challenge.over()) {
+    world.step(InputFrame{true, false, false, false});
     challenge.observe(world);
   }
   EXPECT_TRUE(challenge.timedOut());
   EXPECT_FALSE(challenge.parkedFrame().has_value());
-  EXPECT_EQ(challenge.frames(), 60);
-  EXPECT_EQ(world.frame(), 60);
+  EXPECT_EQ(challenge.clockStart(), 300);
+  EXPECT_EQ(challenge.clockFrames(), 60);
+  EXPECT_EQ(world.frame(), 360);
+}
+
+// What starts the clock: the first step that moves the car, whatever key did it; steering at a
+// standstill moves nothing and starts nothing.
+TEST(ParkingChallenge, ClockStartsAtTheFirstStepThatMovesTheCar) {
+  const Scene scene = driveInScene();
+  struct Case {
+    const char* what;
+    InputFrame keys;
+  };
+  for (const Case& c : {Case{"throttle", {true, false, false, false}},
+                        Case{"reverse from a standstill", {false, true, false, false}},
+                        Case{"throttle while steering", {true, false, true, false}}}) {
+    World world(scene);
+    ParkingChallenge challenge(*scene.goal, 120.0, 100);
+    challenge.observe(world);
+    for (const InputFrame& still :
+         {InputFrame{}, InputFrame{false, false, true, false},
+          InputFrame{false, false, false, true}, InputFrame{false, false, false, false, true}}) {
+      for (int i = 0; i < 50; ++i) {  // nothing, steering left, steering right, the handbrake
+        world.step(still);
+        challenge.observe(world);
+      }
+    }
+    EXPECT_EQ(world.car().position, scene.player.position) << c.what;
+    EXPECT_FALSE(challenge.clockStart().has_value()) << c.what;
+    world.step(c.keys);
+    challenge.observe(world);
+    ASSERT_NE(world.car().position, scene.player.position) << c.what << ": the car did not move";
+    EXPECT_EQ(challenge.clockStart(), 200) << c.what;
+    EXPECT_EQ(challenge.clockFrames(), 1) << c.what;
+  }
+}
+
+// A player who reads the task for 2 s before driving parks with the same time as one who drives
+// at once: the same drive, shifted, gives the same score.
+TEST(ParkingChallenge, WaitingBeforeDrivingCostsNoTime) {
+  const Scene scene = driveInScene();
+  std::optional<ParkingScore> scores[2];
+  for (const int wait : {0, 240}) {
+    World world(scene);
+    ParkingChallenge challenge(*scene.goal, 120.0, 100);
+    challenge.observe(world);
+    for (int i = 0; i < wait; ++i) {
+      world.step(InputFrame{});
+      challenge.observe(world);
+    }
+    while (!challenge.over() && world.frame() < 4000) {
+      world.step(driveIn(world));
+      challenge.observe(world);
+    }
+    ASSERT_TRUE(challenge.parkedFrame().has_value()) << wait;
+    EXPECT_EQ(challenge.clockStart(), wait);
+    scores[wait == 0 ? 0 : 1] = challenge.score();
+  }
+  EXPECT_EQ(scores[0]->frames, scores[1]->frames);
+  EXPECT_EQ(scores[0]->seconds, scores[1]->seconds);
+  EXPECT_EQ(scores[0]->stars, scores[1]->stars);
 }
 
 TEST(ParkingChallenge, RollingThroughTheBayTooFastIsNotParked) {
