@@ -12,6 +12,7 @@
 #include "io/atomic_stream.hpp"
 #include "io/replay_runner.hpp"
 #include "io/summary_json.hpp"
+#include "sim/parking_readout.hpp"
 
 namespace cardemo::app {
 namespace {
@@ -79,12 +80,19 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
 
 std::string goalText(const ParkingChallenge* challenge) {
   if (challenge == nullptr) return "";
+  const std::optional<std::int64_t> start = challenge->clockStart();
   if (const std::optional<ParkingScore> score = challenge->score()) {
-    return "parked    frame " + std::to_string(score->frames) + " (" +
-           fixedText(score->seconds, 2) + " s), damage " + std::to_string(score->damage) + ", " +
-           std::to_string(score->stars) + (score->stars == 1 ? " star\n" : " stars\n");
+    // The clock runs from the car's first move (frame 0 when it never moved).
+    return "parked    frame " + std::to_string(*challenge->parkedFrame()) + ": " +
+           fixedText(score->seconds, 2) + " s from frame " + std::to_string(start.value_or(0)) +
+           ", damage " + std::to_string(score->damage) + ", " + std::to_string(score->stars) +
+           (score->stars == 1 ? " star\n" : " stars\n");
   }
-  return std::string("parked    never") + (challenge->timedOut() ? " (time limit)\n" : "\n");
+  std::string why;
+  for (const std::string& reason : notParkedReasons(*challenge)) {
+    why += (why.empty() ? "" : ", ") + reason;
+  }
+  return "parked    never (" + why + ")\n";
 }
 
 int runReplayCommand(const ReplayOptions& options) {

@@ -1,6 +1,7 @@
 #include "io/summary_json.hpp"
 
 #include "geometry/angle.hpp"
+#include "sim/parking_readout.hpp"
 
 namespace cardemo {
 namespace {
@@ -34,9 +35,15 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
   const WorldStats& s = world.stats();
   nlohmann::json parked = nullptr;
   nlohmann::json score = nullptr;
-  if (challenge != nullptr && challenge->parkedFrame()) {
-    parked = *challenge->parkedFrame();
-    score = scoreJson(*challenge->score());
+  nlohmann::json clock_start = nullptr;
+  nlohmann::json not_parked = nullptr;
+  if (challenge != nullptr) {
+    if (challenge->parkedFrame()) {
+      parked = *challenge->parkedFrame();
+      score = scoreJson(*challenge->score());
+    }
+    if (challenge->clockStart()) clock_start = *challenge->clockStart();
+    not_parked = notParkedReasons(*challenge);
   }
   return {
       {"scene", world.scene().name},
@@ -68,6 +75,8 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
       {"parked", parked},
       {"score", score},
       {"timed_out", challenge != nullptr && challenge->timedOut()},
+      {"clock_start", clock_start},
+      {"not_parked", not_parked},
   };
 }
 

@@ -9,7 +9,8 @@
 namespace cardemo {
 
 /// Builds the summary JSON of a world after a run: scene, hz, frames, health, hits, final, hash,
-/// stats, and the parking challenge's `parked` (frame or null) and `score` (null unless parked).
+/// stats, and the parking challenge's `parked` (frame or null), `score` (null unless parked),
+/// `clock_start` (the level clock's first frame, or null) and `not_parked` (why not, or []).
 [[nodiscard]] nlohmann::json summaryJson(const World& world,
                                          const ParkingChallenge* challenge = nullptr);
 

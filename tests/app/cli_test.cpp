@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "../support/cli_run.hpp"
@@ -214,6 +215,57 @@ TEST(Cli, ExpectParkedIsCheckedPrintedAndInTheJson) {
   EXPECT_NE(r.err.find("parked: expected never, but the scene has no goal"), std::string::npos)
       << r.err;
   EXPECT_NE(r.out.find("\"parked\": null"), std::string::npos) << r.out;
+}
+
+// `replay --json` says when the level clock started and why the car is not parked; the human
+// summary the same. A drive that waits 2 s first parks with the same seconds.
+TEST(Cli, ReplayJsonHasTheClockStartAndWhyNotParked) {
+  const std::string level = asset("scenes/levels/level-1-straight.json");
+  const auto json_of = [](const std::string& replay) {
+    const CliResult r = cardemo("replay " + replay + " --json -");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out, nullptr, false);
+  };
+  const nlohmann::json golden = json_of(asset("replays/level-1-straight.replay"));
+  EXPECT_EQ(golden["clock_start"], 0);
+  EXPECT_EQ(golden["not_parked"], nlohmann::json::array());
+  ASSERT_TRUE(golden["score"].is_object()) << golden.dump();
+
+  std::string inputs;
+  const std::string text = slurp(asset("replays/level-1-straight.replay"));
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end - start);
+    if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0]))) inputs += line + "\n";
+    start = end == std::string::npos ? text.size() : end + 1;
+  }
+  const auto waiting =
+      writeTemp("waiting.replay", "cardemo-replay 1\nscene " + level + "\n240 .\n" + inputs);
+  const nlohmann::json waited = json_of(waiting.string());
+  EXPECT_EQ(waited["clock_start"], 240);
+  EXPECT_EQ(waited["parked"], golden["parked"].get<int>() + 240);
+  EXPECT_EQ(waited["score"], golden["score"]) << waited.dump();
+  const CliResult human = cardemo("replay " + waiting.string());
+  EXPECT_NE(human.out.find("from frame 240"), std::string::npos) << human.out;
+
+  // Stopped short of the bay: not parked, and the readout's words say why.
+  const auto short_of =
+      writeTemp("short.replay", "cardemo-replay 1\nscene " + level + "\n60 U\n200 D\n");
+  const nlohmann::json stopped = json_of(short_of.string());
+  EXPECT_TRUE(stopped["parked"].is_null());
+  ASSERT_TRUE(stopped["not_parked"].is_array());
+  ASSERT_FALSE(stopped["not_parked"].empty());
+  EXPECT_NE(stopped["not_parked"][0].get<std::string>().find(" m "), std::string::npos)
+      << stopped.dump();
+  EXPECT_NE(cardemo("replay " + short_of.string()).out.find("parked    never ("),
+            std::string::npos);
+
+  // No goal: both null.
+  const auto lot = writeTemp(
+      "lot.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") + "\n10 U\n");
+  const nlohmann::json free_drive = json_of(lot.string());
+  EXPECT_TRUE(free_drive["clock_start"].is_null());
+  EXPECT_TRUE(free_drive["not_parked"].is_null());
 }
 
 }  // namespace
