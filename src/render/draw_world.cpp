@@ -8,6 +8,7 @@
 #include "render/effects_layer.hpp"
 #include "render/goal_overlay.hpp"
 #include "render/hud.hpp"
+#include "render/panel_place.hpp"
 #include "render/world_layer.hpp"
 
 namespace cardemo {
@@ -20,8 +21,16 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
   if (options.effects != nullptr) drawDamageNumbers(canvas, camera, *options.effects, palette);
   const Eigen::Vector2f hud = drawHud(canvas, world, options);
   if (options.effects != nullptr) drawHealthPulse(canvas, world, *options.effects);
+  // Panels drawn over the world keep clear of the car and the bay (players could not see where
+  // they were parking under PAUSED), and below the HUD panel as drawn.
+  PanelRoom room{panelArea(canvas.size(), hud.y()),
+                 keepClearBoxes(camera, player_box, options.goal)};
   if (options.goal != nullptr) {
-    drawGoalOverlay(canvas, world, camera, player_box, *options.goal, hud);
+    // The help lists the task itself: no second copy under it.
+    if (const std::optional<ScreenBox> task = drawGoalOverlay(
+            canvas, world, camera, player_box, *options.goal, room.area, !options.help)) {
+      room.avoid.push_back(*task);  // and PAUSED keeps clear of the task
+    }
   }
   if (world.gameOver())
     drawGameOver(canvas, world, camera, player_box, options.game_over_rows, options.game_over_keys);
@@ -30,9 +39,12 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
       !options.banner.empty() ? options.banner : (options.paused ? "PAUSED" : "");
   if (options.help) {
     const std::optional<LevelInfo>& level = world.scene().level;
-    drawHelp(canvas, banner, level ? level->task : std::string());
+    // The game waits while the help is shown: it may cover the HUD, so its room is the window.
+    const Eigen::Vector2f margin = Eigen::Vector2f::Constant(8.0f * hudScale(canvas.size()));
+    room.area = ScreenBox(margin, canvas.size().cast<float>() - margin);
+    (void)drawHelp(canvas, banner, level ? level->task : std::string(), room);
   } else {
-    drawBanner(canvas, banner);
+    (void)drawBanner(canvas, banner, room);
   }
 }
 

@@ -5,16 +5,20 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "geometry/angle.hpp"
 #include "render/end_panel.hpp"
 #include "render/hud.hpp"
 #include "render/hud_colors.hpp"
+#include "render/panel_place.hpp"
 #include "render/shapes.hpp"
+#include "sim/parking_readout.hpp"
 
 namespace cardemo {
 namespace {
 
 constexpr Rgba kTarget{255, 214, 70, 255};
 constexpr Rgba kTargetReady{90, 230, 120, 255};
+constexpr Rgba kHoldTrough{55, 58, 64, 255};
 using hud_colors::kDim;
 using hud_colors::kPanel;
 using hud_colors::kText;
@@ -27,47 +31,99 @@ std::string scoreText(const ParkingScore& s) {
   return secondsText(s.seconds) + "  " + starsText(s.stars);
 }
 
-// Returns the bottom of the timer panel, pixels.
-float drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
+int roundPx(float size) {
+  return static_cast<int>(std::lround(size));
+}
+
+// The timer panel's sizes at a viewport: rows of fixed height, so that its tallest form is known
+// without a canvas (hudInsets keeps the scene under it).
+struct TimerMetrics {
+  float top, pad;
+  int big, small, readout;
+  float big_row, small_row, extra_row;
+};
+
+TimerMetrics timerMetrics(const Eigen::Vector2i& viewport) {
+  const float s = hudScale(viewport);
+  TimerMetrics m{};
+  m.top = 12.0f * s;
+  m.pad = 10.0f * s;
+  m.big = roundPx(26.0f * s);
+  m.small = roundPx(14.0f * s);
+  m.readout = roundPx(15.0f * s);
+  // A line of text is about 1.17 em high (SDL_ttf, DejaVu Sans).
+  m.big_row = 1.2f * static_cast<float>(m.big);
+  m.small_row = 1.3f * static_cast<float>(m.small);
+  m.extra_row = 0.3f * m.pad + 1.2f * static_cast<float>(m.readout);
+  return m;
+}
+
+std::string joined(const std::vector<std::string>& parts, const char* separator) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : separator) + p;
+  return out;
+}
+
+// The timer panel at the top centre: the level clock, the detail line, and near the bay the
+// readout of what is still off or, while the checks hold, a bar filling over the hold time.
+void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   const Eigen::Vector2i vp = canvas.size();
-  const float s = hudScale(vp);
-  const int big = static_cast<int>(std::lround(26.0f * s));
-  const int small = static_cast<int>(std::lround(14.0f * s));
-  const float pad = 10.0f * s;
+  const TimerMetrics m = timerMetrics(vp);
   const std::string time = secondsText(challenge.seconds());
   const std::string detail = timerDetail(challenge);
-  const Eigen::Vector2f ts = canvas.textSize(time, big);
-  const Eigen::Vector2f ds = canvas.textSize(detail, small);
-  const float w = std::max(ts.x(), ds.x()) + 2.0f * pad;
-  const float h = ts.y() + ds.y() + 2.2f * pad;
-  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w), 12.0f * s};
+  const std::string readout = joined(bayReadout(challenge), "   ");
+  const bool holding =
+      !challenge.over() && challenge.holdStart().has_value() && challenge.holdSeconds() > 0.0;
+  const bool extra = !readout.empty() || holding;
+  const float ts = canvas.textSize(time, m.big).x();
+  const float ds = canvas.textSize(detail, m.small).x();
+  const float rs = readout.empty() ? 0.0f : canvas.textSize(readout, m.readout).x();
+  const float bar_min = holding ? 160.0f * hudScale(vp) : 0.0f;
+  const float w = std::max({ts, ds, rs, bar_min}) + 2.0f * m.pad;
+  const float h =
+      m.big_row + 0.2f * m.pad + m.small_row + (extra ? m.extra_row : 0.0f) + 2.0f * m.pad;
+  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w), m.top};
   fillRect(canvas, tl, {w, h}, kPanel);
-  canvas.text({tl.x() + 0.5f * (w - ts.x()), tl.y() + pad}, time, big, kText);
-  canvas.text({tl.x() + 0.5f * (w - ds.x()), tl.y() + pad * 1.2f + ts.y()}, detail, small, kDim);
-  return tl.y() + h;
-}
-
-// Area of the rectangle [at, at + size] that the rectangles `avoid` cover (overlaps summed).
-float coveredArea(const Eigen::Vector2f& at, const Eigen::Vector2f& size,
-                  const std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>>& avoid) {
-  float area = 0.0f;
-  for (const auto& [lo, hi] : avoid) {
-    const Eigen::Vector2f a = lo.cwiseMax(at);
-    const Eigen::Vector2f b = hi.cwiseMin(at + size);
-    if (b.x() > a.x() && b.y() > a.y()) area += (b.x() - a.x()) * (b.y() - a.y());
+  float y = tl.y() + m.pad;
+  canvas.text({tl.x() + 0.5f * (w - ts), y}, time, m.big, kText);
+  y += m.big_row + 0.2f * m.pad;
+  canvas.text({tl.x() + 0.5f * (w - ds), y}, detail, m.small, kDim);
+  y += m.small_row + 0.3f * m.pad;
+  if (!readout.empty()) {
+    canvas.text({tl.x() + 0.5f * (w - rs), y}, readout, m.readout, kTarget);
+  } else if (holding) {
+    const float bar_h = 0.6f * static_cast<float>(m.readout);
+    const Eigen::Vector2f at{tl.x() + m.pad,
+                             y + 0.5f * (1.2f * static_cast<float>(m.readout) - bar_h)};
+    const float full = w - 2.0f * m.pad;
+    const double fraction = std::clamp(challenge.heldSeconds() / challenge.holdSeconds(), 0.0, 1.0);
+    fillRect(canvas, at, {full, bar_h}, kHoldTrough);
+    if (fraction > 0.0) {
+      fillRect(canvas, at, {static_cast<float>(full * fraction), bar_h}, kTargetReady);
+    }
   }
-  return area;
 }
 
-// The level's title and task for the first kTaskSeconds of an attempt, centred across the screen
-// under the timer (and the HUD panel), or above the status line when the car or the bay is there;
-// fades out over its last half second.
-void drawTaskPanel(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
-                   const Goal& goal, float timer_bottom, const Eigen::Vector2f& hud_corner) {
+// Seconds the level's task is still shown for: the first kTaskSeconds of play and, after that,
+// until the car first moves (the clock starts), then half a second more to fade.
+double taskSecondsLeft(const World& world, const ParkingChallenge& challenge) {
+  const double hz = world.settings().hz;
+  const double now = static_cast<double>(world.frame()) / hz;
+  const std::optional<std::int64_t> start = challenge.clockStart();
+  if (!start) return std::max(kTaskSeconds - now, 0.5);
+  return std::max(kTaskSeconds, static_cast<double>(*start) / hz + 0.5) - now;
+}
+
+// The level's title and task at the start of an attempt (taskSecondsLeft), centred across the
+// screen at the top of `area`, or where placeClear() finds room in it clear of `avoid` (the car
+// and the bay); fades out over its last half second. Returns its box when drawn.
+std::optional<ScreenBox> drawTaskPanel(Canvas& canvas, const World& world,
+                                       const ParkingChallenge& challenge, const ScreenBox& area,
+                                       std::span<const ScreenBox> avoid) {
   const std::optional<LevelInfo>& level = world.scene().level;
-  if (!level || level->task.empty()) return;
-  const double left = kTaskSeconds - static_cast<double>(world.frame()) / world.settings().hz;
-  if (left <= 0.0) return;
+  if (!level || level->task.empty()) return std::nullopt;
+  const double left = taskSecondsLeft(world, challenge);
+  if (left <= 0.0) return std::nullopt;
   const float fade = static_cast<float>(std::min(1.0, left / 0.5));
   const auto faded = [fade](Rgba c) {
     c.a = static_cast<std::uint8_t>(std::lround(static_cast<float>(c.a) * fade));
@@ -75,37 +131,55 @@ void drawTaskPanel(Canvas& canvas, const World& world, const Camera& camera, con
   };
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
-  const float pad = 12.0f * s;
   const float gap = 10.0f * s;
-  const int head = static_cast<int>(std::lround(15.0f * s));
   const std::string heading = "Level " + std::to_string(level->order) + ": " + level->title;
-  // Shrunk to fit a narrow window: the task is one line.
-  int text = static_cast<int>(std::lround(22.0f * s));
-  const float room = static_cast<float>(vp.x()) - 2.0f * (gap + pad);
-  const float natural = canvas.textSize(level->task, text).x();
-  if (natural > room && natural > 0.0f) {
-    text = std::max(8, static_cast<int>(static_cast<float>(text) * room / natural));
-  }
-  const Eigen::Vector2f hs = canvas.textSize(heading, head);
-  const Eigen::Vector2f ts = canvas.textSize(level->task, text);
-  const Eigen::Vector2f size{std::max(hs.x(), ts.x()) + 2.0f * pad,
-                             hs.y() + ts.y() + 0.4f * pad + 2.0f * pad};
-  const float x = 0.5f * (static_cast<float>(vp.x()) - size.x());
-  // Above the status line at the bottom left.
-  const float status_top = statusLineTop(vp);
-  const std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>> avoid{
-      screenRect(camera, player_box), screenRect(camera, bayBox(goal))};
-  // A wide panel reaches under the HUD panel at the top left: it goes below both.
-  Eigen::Vector2f at{
-      x, (x < hud_corner.x() ? std::max(timer_bottom, hud_corner.y()) : timer_bottom) + gap};
-  const Eigen::Vector2f low{x, status_top - gap - size.y()};
-  if (coveredArea(at, size, avoid) > 0.0f &&
-      coveredArea(low, size, avoid) < coveredArea(at, size, avoid)) {
-    at = low;
-  }
-  fillRect(canvas, at, size, faded({12, 14, 18, 225}));
-  canvas.text(at + Eigen::Vector2f{pad, pad}, heading, head, faded(kTarget));
-  canvas.text({at.x() + pad, at.y() + pad + hs.y() + 0.4f * pad}, level->task, text, faded(kText));
+  // The task is one line: in a narrow window its text is smaller from the start.
+  const float room = static_cast<float>(vp.x()) - 2.0f * (gap + 12.0f * s);
+  const float natural = canvas.textSize(level->task, roundPx(22.0f * s)).x();
+  const float fit = natural > room && natural > 0.0f ? room / natural : 1.0f;
+  struct Layout {
+    float pad;
+    int head, text;
+    Eigen::Vector2f hs, ts, size;
+  };
+  const auto layout = [&](float scale) {
+    Layout l{};
+    l.pad = 12.0f * s * scale;
+    l.head = std::max(6, roundPx(15.0f * s * scale));
+    l.text = std::max(6, roundPx(22.0f * s * scale * fit));
+    l.hs = canvas.textSize(heading, l.head);
+    l.ts = canvas.textSize(level->task, l.text);
+    l.size = {std::max(l.hs.x(), l.ts.x()) + 2.0f * l.pad, l.hs.y() + l.ts.y() + 2.4f * l.pad};
+    return l;
+  };
+  const Eigen::Vector2f first = layout(1.0f).size;
+  const Eigen::Vector2f preferred{0.5f * (static_cast<float>(vp.x()) - first.x()),
+                                  area.min().y() + gap};
+  const PanelSpot spot = placeClear(
+      area, avoid, gap, [&](float scale) { return layout(scale).size; }, preferred);
+  const Layout l = layout(spot.scale);
+  const Eigen::Vector2f at = spot.top_left;
+  fillRect(canvas, at, l.size, faded({12, 14, 18, 225}));
+  canvas.text(at + Eigen::Vector2f{l.pad, l.pad}, heading, l.head, faded(kTarget));
+  canvas.text({at.x() + l.pad, at.y() + l.pad + l.hs.y() + 0.4f * l.pad}, level->task, l.text,
+              faded(kText));
+  return ScreenBox(at, at + l.size);
+}
+
+// A filled arrow painted in the bay, pointing along `dir` from its centre towards one end.
+void bayArrow(Canvas& canvas, const Camera& camera, const Goal& goal, const Eigen::Vector2d& dir,
+              const Rgba& color) {
+  const ParkingBay& bay = goal.bay;
+  const Eigen::Vector2d side{-dir.y(), dir.x()};
+  const auto at = [&](double along, double across) {
+    return camera.toScreen(bay.center + dir * (along * bay.length) + side * (across * bay.width));
+  };
+  // Clear of the "P" painted at the centre; the head stops short of the bay's end.
+  const std::array<Eigen::Vector2f, 4> shaft{at(0.13, -0.05), at(0.3, -0.05), at(0.3, 0.05),
+                                             at(0.13, 0.05)};
+  const std::array<Eigen::Vector2f, 3> head{at(0.43, 0.0), at(0.28, 0.22), at(0.28, -0.22)};
+  canvas.fillConvex(shaft, color);
+  canvas.fillConvex(head, color);
 }
 
 }  // namespace
@@ -140,7 +214,7 @@ std::string timerDetail(const ParkingChallenge& challenge) {
 
 std::string starsText(int stars) {
   std::string out;
-  for (int i = 0; i < kMaxStars; ++i) out += i < stars ? "\xE2\x98\x85" : "\xE2\x98\x86";
+  for (int i = 0; i < kMaxStars; ++i) out += i < stars ? kStarEarned : kStarMissed;
   return out;
 }
 
@@ -150,15 +224,33 @@ std::string secondsText(double seconds) {
   return buf;
 }
 
+std::vector<std::string> stillOff(const ParkingChallenge& challenge) {
+  std::vector<std::string> reasons = notParkedReasons(challenge);
+  // The panel's title and its Ended row already say how the run ended.
+  std::erase_if(reasons, [](const std::string& r) { return r == "time up" || r == "wrecked"; });
+  return reasons;
+}
+
 std::vector<std::pair<std::string, std::string>> runSummaryRows(const World& world,
                                                                 const GoalView& view) {
   std::vector<std::pair<std::string, std::string>> rows;
   const ParkingChallenge& c = *view.challenge;
   const std::optional<ParkingScore> score = c.score();
   rows.emplace_back("Time", secondsText(score ? score->seconds : c.seconds()));
-  const int damage = world.scene().player.health - world.health();
-  rows.emplace_back("Damage", std::to_string(score ? score->damage : damage));
-  rows.emplace_back("Stars", starsText(score ? score->stars : 0));
+  if (score) {
+    for (const StarReason& star : starReasons(c.goal(), *score)) {
+      rows.emplace_back(std::string(star.earned ? kStarEarned : kStarMissed) + " " + star.text, "");
+    }
+  } else {
+    if (c.timedOut()) {
+      rows.emplace_back("Ended", "time limit " + secondsText(c.goal().time_limit.value_or(0.0)));
+    } else if (c.wrecked() || world.gameOver()) {
+      rows.emplace_back("Ended", kWreckedText);
+    }
+    const std::vector<std::string> off = stillOff(c);
+    if (!off.empty()) rows.emplace_back("Still off", joined(off, ", "));
+    rows.emplace_back("Damage", std::to_string(world.scene().player.health - world.health()));
+  }
   if (view.new_best) {
     rows.emplace_back("Best", "new best!");
   } else if (view.best) {
@@ -182,14 +274,31 @@ std::optional<Eigen::Vector2f> edgeAnchor(const Eigen::Vector2i& viewport,
 
 void drawGoalBay(Canvas& canvas, const Camera& camera, const GoalView& view) {
   const ParkingChallenge& c = *view.challenge;
+  const Goal& goal = c.goal();
   const Rgba color = c.lastCheck().position_ok && c.lastCheck().heading_ok ? kTargetReady : kTarget;
-  const std::array<Eigen::Vector2f, 4> bay = projectObb(camera, bayBox(c.goal()));
+  const std::array<Eigen::Vector2f, 4> bay = projectObb(camera, bayBox(goal));
   outline(canvas, bay, std::max(2.0f, 2.5f * hudScale(canvas.size())), color);
+  // The heading the car should end with; both ways when either direction counts.
+  const Eigen::Vector2d dir = unitFromDegrees(goal.bay.heading_deg);
+  bayArrow(canvas, camera, goal, dir, color);
+  if (goal.either_direction) bayArrow(canvas, camera, goal, -dir, color);
 }
 
-void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
-                     const Obb2& player_box, const GoalView& view,
-                     const Eigen::Vector2f& hud_corner) {
+std::vector<ScreenBox> keepClearBoxes(const Camera& camera, const Obb2& player_box,
+                                      const GoalView* view) {
+  std::vector<ScreenBox> boxes;
+  const auto add = [&](const Obb2& box) {
+    const auto [lo, hi] = screenRect(camera, box);
+    boxes.emplace_back(lo, hi);
+  };
+  add(player_box);
+  if (view != nullptr && view->challenge != nullptr) add(bayBox(view->challenge->goal()));
+  return boxes;
+}
+
+std::optional<ScreenBox> drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
+                                         const Obb2& player_box, const GoalView& view,
+                                         const ScreenBox& area, bool show_task) {
   const ParkingChallenge& c = *view.challenge;
   const Goal& goal = c.goal();
   const float s = hudScale(canvas.size());
@@ -200,30 +309,33 @@ void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
     arrow(canvas, *at - 30.0f * s * dir, *at + 6.0f * s * dir, 5.0f * s, 16.0f * s, kTarget);
     char text[32];
     std::snprintf(text, sizeof text, "%.0f m", c.lastCheck().distance);
-    const int h = static_cast<int>(std::lround(15.0f * s));
+    const int h = roundPx(15.0f * s);
     const Eigen::Vector2f ts = canvas.textSize(text, h);
     const Eigen::Vector2f label = *at - 30.0f * s * dir - 0.5f * ts - 14.0f * s * dir;
     fillRect(canvas, label - Eigen::Vector2f{4.0f, 2.0f}, ts + Eigen::Vector2f{8.0f, 4.0f}, kPanel);
     canvas.text(label, text, h, kTarget);
   }
-  const float timer_bottom = drawTimer(canvas, c);
-  if (!c.over()) drawTaskPanel(canvas, world, camera, player_box, goal, timer_bottom, hud_corner);
-
+  drawTimer(canvas, c);
+  std::optional<ScreenBox> task;
+  if (show_task && !c.over()) {
+    const std::vector<ScreenBox> avoid = keepClearBoxes(camera, player_box, &view);
+    task = drawTaskPanel(canvas, world, c, area.isEmpty() ? panelArea(canvas.size()) : area, avoid);
+  }
+  const std::string keys = view.keys.empty() ? std::string("Enter restart    Esc quit") : view.keys;
   if (c.parkedFrame()) {
     drawEndPanel(canvas, camera, player_box,
-                 {"PARKED",
-                  kTargetReady,
-                  {10, 40, 20, 215},
-                  runSummaryRows(world, view),
-                  view.keys.empty() ? std::string("Enter restart    Esc quit") : view.keys});
+                 {"PARKED", kTargetReady, {10, 40, 20, 215}, runSummaryRows(world, view), keys});
   } else if (c.timedOut()) {
-    drawEndPanel(canvas, camera, player_box,
-                 {"TIME UP",
-                  {255, 90, 80, 255},
-                  {60, 10, 12, 215},
-                  runSummaryRows(world, view),
-                  view.keys.empty() ? std::string("Enter restart    Esc quit") : view.keys});
+    drawEndPanel(
+        canvas, camera, player_box,
+        {"TIME UP", {255, 90, 80, 255}, {60, 10, 12, 215}, runSummaryRows(world, view), keys});
   }
+  return task;
+}
+
+float timerPanelBottom(const Eigen::Vector2i& viewport) {
+  const TimerMetrics m = timerMetrics(viewport);
+  return m.top + m.pad + m.big_row + 0.2f * m.pad + m.small_row + m.extra_row + m.pad;
 }
 
 }  // namespace cardemo

@@ -10,13 +10,21 @@
 #include "geometry/obb2.hpp"
 #include "render/camera.hpp"
 #include "render/canvas.hpp"
+#include "render/panel_place.hpp"
 #include "sim/parking_goal.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
 
-/// Seconds of play at the start of an attempt during which a level's task is shown.
+/// Seconds of play at the start of an attempt during which a level's task is shown (and after
+/// them until the car first moves).
 inline constexpr double kTaskSeconds = 4.0;
+
+/// A star earned and a star missed, as the panels write them.
+inline constexpr const char* kStarEarned = "\xE2\x98\x85";
+inline constexpr const char* kStarMissed = "\xE2\x98\x86";
+/// The end panels' words for a run that ended at health 0.
+inline constexpr const char* kWreckedText = "wrecked (health 0)";
 
 /// What the overlay shows besides the world.
 struct GoalView {
@@ -33,7 +41,15 @@ struct GoalView {
 /// "12.3 s".
 [[nodiscard]] std::string secondsText(double seconds);
 
-/// The run summary rows of an end panel: time, damage, stars and best.
+/// What was still off when a run ended unparked (notParkedReasons without "time up" and
+/// "wrecked", which the panel's title and Ended row say): the readout's words, the distance to
+/// the bay, or the hold.
+[[nodiscard]] std::vector<std::string> stillOff(const ParkingChallenge& challenge);
+
+/// The run summary rows of an end panel. PARKED: the time, then each star earned (★) or missed
+/// (☆) and why ("★ parked", "☆ 6 damage", "☆ over par by 3.2 s"), then the best. TIME UP and a
+/// level's GAME OVER: the time, what ended the run (Ended), what was still off, the damage and
+/// the best.
 [[nodiscard]] std::vector<std::pair<std::string, std::string>> runSummaryRows(const World& world,
                                                                               const GoalView& view);
 
@@ -48,16 +64,26 @@ struct GoalView {
 /// while the car is in the bay; then what ended the run.
 [[nodiscard]] std::string timerDetail(const ParkingChallenge& challenge);
 
+/// The lowest the timer panel reaches in a viewport (with its readout row), pixels: the HUD's
+/// top strip (hudInsets) covers it.
+[[nodiscard]] float timerPanelBottom(const Eigen::Vector2i& viewport);
+
 /// The target bay's outline, yellow, green once the car's position and heading are within the
-/// tolerances: paint on the ground, which drawWorldLayer draws under the cars.
+/// tolerances, with an arrow inside pointing the way the car should face (two, one each way, when
+/// either direction counts): paint on the ground, which drawWorldLayer draws under the cars.
 void drawGoalBay(Canvas& canvas, const Camera& camera, const GoalView& view);
 
-/// Draws the off-screen arrow with the distance to the bay, the timer, the level's task
-/// (`level.task`, for the first kTaskSeconds of play, clear of the car, the bay and the HUD panel
-/// whose bottom-right corner is `hud_corner` when it can be), and the end panel when the car has
-/// parked or the time is up.
-void drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
-                     const Obb2& player_box, const GoalView& view,
-                     const Eigen::Vector2f& hud_corner = Eigen::Vector2f::Zero());
+/// The screen boxes that panels must not cover: the player's car and, with a goal, its bay.
+[[nodiscard]] std::vector<ScreenBox> keepClearBoxes(const Camera& camera, const Obb2& player_box,
+                                                    const GoalView* view);
+
+/// Draws the off-screen arrow with the distance to the bay, the timer (with the readout of what
+/// is still off near the bay, and the hold's bar), the level's task (`level.task`: for the first
+/// kTaskSeconds of play and until the car first moves, placed in `area` (empty: panelArea())
+/// clear of the car and the bay; not with `show_task` false), and the end panel when the car has
+/// parked or the time is up. Returns the task panel's box when it was drawn.
+std::optional<ScreenBox> drawGoalOverlay(Canvas& canvas, const World& world, const Camera& camera,
+                                         const Obb2& player_box, const GoalView& view,
+                                         const ScreenBox& area = {}, bool show_task = true);
 
 }  // namespace cardemo

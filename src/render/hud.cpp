@@ -5,7 +5,9 @@
 #include <cstdio>
 
 #include "render/end_panel.hpp"
+#include "render/goal_overlay.hpp"
 #include "render/hud_colors.hpp"
+#include "render/panel_place.hpp"
 #include "render/shapes.hpp"
 
 namespace cardemo {
@@ -130,8 +132,11 @@ float hudPanelHeight(const Eigen::Vector2i& viewport, std::size_t rows) {
 ViewInsets hudInsets(const Eigen::Vector2i& viewport) {
   const float s = hudScale(viewport);
   const float panel_top = healthBarRect(viewport).top_left.y() - 10.0f * s;
-  return {panel_top + hudPanelHeight(viewport, kPlayerRows) + 8.0f * s,
-          static_cast<float>(viewport.y()) - statusLineTop(viewport)};
+  // A little below the player's panel, and below the level's timer at its tallest (which, at
+  // every HUD scale, ends above that margin: the strip is the panel's).
+  const float top = std::max(panel_top + hudPanelHeight(viewport, kPlayerRows) + 8.0f * s,
+                             timerPanelBottom(viewport));
+  return {top, static_cast<float>(viewport.y()) - statusLineTop(viewport)};
 }
 
 float statusLineTop(const Eigen::Vector2i& viewport) {
@@ -188,20 +193,27 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
   return origin + panel;
 }
 
-void drawBanner(Canvas& canvas, const std::string& text) {
-  if (text.empty()) return;
+ScreenBox drawBanner(Canvas& canvas, const std::string& text, const PanelRoom& room) {
+  if (text.empty()) return {};
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
-  const float pad = 14.0f * s;
-  const int big = px(34, s);
-  const Eigen::Vector2f ts = canvas.textSize(text, big);
-  const Eigen::Vector2f box{ts.x() + 2.0f * pad, ts.y() + 2.0f * pad};
-  // A third of the way down: clear of the timer and the HUD panels at the top, and above the
-  // car, which the camera keeps near the centre.
-  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - box.x()),
-                           static_cast<float>(vp.y()) / 3.0f - 0.5f * box.y()};
-  fillRect(canvas, tl, box, kBannerBackdrop);
-  canvas.text(tl + Eigen::Vector2f{pad, pad}, text, big, kBannerText);
+  const auto size_at = [&](float scale) {
+    const float pad = 14.0f * s * scale;
+    return Eigen::Vector2f(canvas.textSize(text, px(34, s * scale)) +
+                           Eigen::Vector2f::Constant(2.0f * pad));
+  };
+  // A third of the way down when that covers neither the car nor the bay: clear of the timer and
+  // the HUD panels at the top, and above the car, which the camera keeps near the centre.
+  const Eigen::Vector2f natural = size_at(1.0f);
+  const Eigen::Vector2f preferred{0.5f * (static_cast<float>(vp.x()) - natural.x()),
+                                  static_cast<float>(vp.y()) / 3.0f - 0.5f * natural.y()};
+  const ScreenBox area = room.area.isEmpty() ? panelArea(vp) : room.area;
+  const PanelSpot spot = placeClear(area, room.avoid, 12.0f * s, size_at, preferred);
+  const Eigen::Vector2f box = size_at(spot.scale);
+  const float pad = 14.0f * s * spot.scale;
+  fillRect(canvas, spot.top_left, box, kBannerBackdrop);
+  canvas.text(spot.top_left + Eigen::Vector2f{pad, pad}, text, px(34, s * spot.scale), kBannerText);
+  return {spot.top_left, spot.top_left + box};
 }
 
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
@@ -215,6 +227,7 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
   if (panel.rows.empty()) {
     panel.rows = {
         {"Time", format("%.1f s", static_cast<double>(world.frame()) / world.settings().hz)},
+        {"Ended", kWreckedText},
         {"Crashes", std::to_string(world.damagingCrashes())},
         {"Damage", std::to_string(world.scene().player.health - world.health())}};
   }
@@ -242,43 +255,100 @@ const std::vector<std::pair<std::string, std::string>>& helpKeys() {
   return keys;
 }
 
-void drawHelp(Canvas& canvas, const std::string& note, const std::string& task) {
-  const Eigen::Vector2i vp = canvas.size();
-  const float s = hudScale(vp);
-  const int h = px(17, s);
-  const int title_h = px(22, s);
-  const float row = h * 1.45f;
-  float key_w = 0.0f;
+namespace {
+
+// The help panel's measurements at a size factor `s`.
+struct HelpLayout {
+  int h, title_h;
+  float row, gap, pad, key_w;
+  std::vector<std::string> task_lines;  // the task, wrapped to the width of the keys' table
+  Eigen::Vector2f size;
+};
+
+// `text` split at spaces into lines at most `width` pixels wide (a longer word keeps its line).
+std::vector<std::string> wrapped(Canvas& canvas, const std::string& text, int px_height,
+                                 float width) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && canvas.textSize(longer, px_height).x() > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+    start = end + 1;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+HelpLayout helpLayout(Canvas& canvas, float s, const std::string& task_line) {
+  HelpLayout l{};
+  l.h = px(17, s);
+  l.title_h = px(22, s);
+  l.row = static_cast<float>(l.h) * 1.45f;
   float desc_w = 0.0f;
   for (const auto& [k, d] : helpKeys()) {
-    key_w = std::max(key_w, canvas.textSize(k, h).x());
-    desc_w = std::max(desc_w, canvas.textSize(d, h).x());
+    l.key_w = std::max(l.key_w, canvas.textSize(k, l.h).x());
+    desc_w = std::max(desc_w, canvas.textSize(d, l.h).x());
   }
-  const float gap = 24.0f * s;
-  const float pad = 22.0f * s;
+  l.gap = 24.0f * s;
+  l.pad = 22.0f * s;
+  const float table = l.key_w + l.gap + desc_w;
+  if (!task_line.empty()) l.task_lines = wrapped(canvas, task_line, l.h, table);
+  float w = table;
+  for (const std::string& line : l.task_lines) w = std::max(w, canvas.textSize(line, l.h).x());
+  const float task_h =
+      l.task_lines.empty() ? 0.0f : l.row * (static_cast<float>(l.task_lines.size()) + 1.0f);
+  const float hgt = static_cast<float>(l.title_h) * 1.8f + task_h +
+                    l.row * static_cast<float>(helpKeys().size()) + 2.0f * l.pad;
+  l.size = {w + 2.0f * l.pad, hgt};
+  return l;
+}
+
+}  // namespace
+
+ScreenBox drawHelp(Canvas& canvas, const std::string& note, const std::string& task,
+                   const PanelRoom& room) {
+  const Eigen::Vector2i vp = canvas.size();
+  const float s = hudScale(vp);
   const std::string task_line = task.empty() ? std::string() : "Task: " + task;
-  const float task_h = task.empty() ? 0.0f : 2.0f * row;
-  const float w = std::max(key_w + gap + desc_w, canvas.textSize(task_line, h).x()) + 2.0f * pad;
-  const float hgt =
-      title_h * 1.8f + task_h + row * static_cast<float>(helpKeys().size()) + 2.0f * pad;
-  const Eigen::Vector2f tl{0.5f * (static_cast<float>(vp.x()) - w),
-                           0.5f * (static_cast<float>(vp.y()) - hgt)};
-  fillRect(canvas, tl, {w, hgt}, {12, 14, 18, 225});
-  canvas.text(tl + Eigen::Vector2f{pad, pad}, "Keys", title_h, kBannerText);
+  const auto size_at = [&](float scale) { return helpLayout(canvas, s * scale, task_line).size; };
+  // Centred when that covers neither the car nor the bay; else beside them, smaller if need be.
+  // The game waits while the help is shown, so it may cover the HUD: the whole window is its room.
+  const Eigen::Vector2f natural = size_at(1.0f);
+  const Eigen::Vector2f preferred = 0.5f * (vp.cast<float>() - natural);
+  const Eigen::Vector2f margin = Eigen::Vector2f::Constant(8.0f * s);
+  const ScreenBox area =
+      room.area.isEmpty() ? ScreenBox(margin, vp.cast<float>() - margin) : room.area;
+  const PanelSpot spot = placeClear(area, room.avoid, 12.0f * s, size_at, preferred);
+  const HelpLayout l = helpLayout(canvas, s * spot.scale, task_line);
+  const Eigen::Vector2f tl = spot.top_left;
+  const float w = l.size.x();
+  fillRect(canvas, tl, l.size, {12, 14, 18, 225});
+  canvas.text(tl + Eigen::Vector2f{l.pad, l.pad}, "Keys", l.title_h, kBannerText);
   if (!note.empty()) {
-    const float nw = canvas.textSize(note, title_h).x();
-    canvas.text({tl.x() + w - pad - nw, tl.y() + pad}, note, title_h, kBannerText);
+    const float nw = canvas.textSize(note, l.title_h).x();
+    canvas.text({tl.x() + w - l.pad - nw, tl.y() + l.pad}, note, l.title_h, kBannerText);
   }
-  float y = tl.y() + pad + title_h * 1.8f;
-  if (!task.empty()) {
-    canvas.text({tl.x() + pad, y}, task_line, h, kText);
-    y += task_h;
+  float y = tl.y() + l.pad + static_cast<float>(l.title_h) * 1.8f;
+  for (const std::string& line : l.task_lines) {
+    canvas.text({tl.x() + l.pad, y}, line, l.h, kText);
+    y += l.row;
   }
+  if (!l.task_lines.empty()) y += l.row;
   for (const auto& [k, d] : helpKeys()) {
-    canvas.text({tl.x() + pad, y}, k, h, kBannerText);
-    canvas.text({tl.x() + pad + key_w + gap, y}, d, h, kText);
-    y += row;
+    canvas.text({tl.x() + l.pad, y}, k, l.h, kBannerText);
+    canvas.text({tl.x() + l.pad + l.key_w + l.gap, y}, d, l.h, kText);
+    y += l.row;
   }
+  return {tl, tl + l.size};
 }
 
 }  // namespace cardemo

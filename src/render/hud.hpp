@@ -8,6 +8,7 @@
 #include "render/camera.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/panel_place.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
@@ -62,11 +63,15 @@ float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
 /// corner of the panel, pixels.
 Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& options);
 
-/// A large one-line message (PAUSED, YOUR TURN) centred across the screen a third of the way down,
-/// on an opaque backdrop; drawn last, over the HUD and the level's timer. Empty text: nothing.
-void drawBanner(Canvas& canvas, const std::string& text);
+/// A large one-line message (PAUSED, YOUR TURN) on an opaque backdrop, centred across the screen a
+/// third of the way down, or, when that would cover a box of `room.avoid` (the car's and the
+/// bay's screen boxes), where placeClear() puts it in `room.area`; drawn last, over the HUD and
+/// the level's timer.
+/// Empty text: nothing. Returns the backdrop's box (empty when nothing was drawn).
+ScreenBox drawBanner(Canvas& canvas, const std::string& text, const PanelRoom& room = {});
 
-/// The game-over panel beside the car (never over it): time, crashes and damage, or `summary_rows`
+/// The game-over panel beside the car (never over it): time, what ended the run, crashes and
+/// damage, or `summary_rows`
 /// when given (a level's run summary), and the keys line `keys` (default "Enter restart    Esc
 /// quit").
 void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, const Obb2& player_box,
@@ -77,7 +82,10 @@ void drawGameOver(Canvas& canvas, const World& world, const Camera& camera, cons
 [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& helpKeys();
 
 /// The F1 help panel, with `note` (e.g. "PAUSED") at the right of its title row and the level's
-/// `task`, when given, above the keys.
-void drawHelp(Canvas& canvas, const std::string& note = {}, const std::string& task = {});
+/// `task`, when given, above the keys (wrapped to their width): centred, or where placeClear()
+/// puts it in `room` clear of its boxes (shrunk when it fits nowhere whole). The game waits while
+/// it is shown, so an empty `room.area` means the whole window. Returns the panel's box.
+ScreenBox drawHelp(Canvas& canvas, const std::string& note = {}, const std::string& task = {},
+                   const PanelRoom& room = {});
 
 }  // namespace cardemo

@@ -14,6 +14,7 @@
 #include "io/replay_text.hpp"
 #include "recording_canvas.hpp"
 #include "render/debug_overlay.hpp"
+#include "render/goal_overlay.hpp"
 #include "render/hud.hpp"
 #include "render/shapes.hpp"
 
@@ -453,17 +454,6 @@ TEST(Hud, GameOverPanelListsTheKeysItIsGiven) {
   EXPECT_FALSE(canvas.hasText("Enter restart    Esc quit"));
 }
 
-// The value drawn on the same row as `label` (to its right), or "" when there is no such row.
-std::string rowValue(const RecordingCanvas& canvas, const std::string& label) {
-  for (const auto& t : canvas.texts) {
-    if (t.text != label) continue;
-    for (const auto& v : canvas.texts) {
-      if (&v != &t && v.at.y() == t.at.y() && v.at.x() > t.at.x()) return v.text;
-    }
-  }
-  return "";
-}
-
 // A bundled replay run to its end.
 World replayed(const std::string& name) {
   const std::string path = std::string(CARDEMO_SOURCE_DIR) + "/assets/replays/" + name;
@@ -491,13 +481,13 @@ TEST(Hud, CountsDamagingCrashesNotEveryTouch) {
     const std::string crashes = std::to_string(damaging.size());
     const Camera camera = followCamera(world.carBox(), 30.0, kViewport);
     const RecordingCanvas player = drawn(world, camera);
-    EXPECT_EQ(rowValue(player, "Crashes"), crashes) << name;
+    EXPECT_EQ(player.rowValue("Crashes"), crashes) << name;
     EXPECT_FALSE(player.hasText("Hits")) << name;
     DrawOptions debug;
     debug.debug_overlay = true;
     const RecordingCanvas overlay = drawn(world, camera, debug);
-    EXPECT_EQ(rowValue(overlay, "Crashes"), crashes) << name;
-    EXPECT_EQ(rowValue(overlay, "Hits"), std::to_string(world.hits().size())) << name;
+    EXPECT_EQ(overlay.rowValue("Crashes"), crashes) << name;
+    EXPECT_EQ(overlay.rowValue("Hits"), std::to_string(world.hits().size())) << name;
   }
 }
 
@@ -526,6 +516,15 @@ TEST(Hud, InsetsCoverThePlayersPanelAndTheStatusLine) {
     const ViewInsets insets = hudInsets(vp);
     EXPECT_LE(drawHud(canvas, world, player).y(), insets.top) << vp.transpose();
     EXPECT_FLOAT_EQ(static_cast<float>(vp.y()) - insets.bottom, statusLineTop(vp));
+  }
+  // The level's timer at its tallest (with the readout's row) ends above the strip the HUD panel
+  // sets, at every HUD scale: the strip, and so the camera's framing, is the panel's.
+  for (int height = 240; height <= 2400; height += 7) {
+    const Eigen::Vector2i vp{height * 16 / 9, height};
+    RecordingCanvas canvas(vp);
+    const float panel_bottom = drawHud(canvas, world, DrawOptions{}).y();
+    EXPECT_FLOAT_EQ(hudInsets(vp).top, panel_bottom + 8.0f * hudScale(vp)) << height;
+    EXPECT_LT(timerPanelBottom(vp), hudInsets(vp).top) << height;
   }
 }
 

@@ -28,6 +28,14 @@ Scene bayScene(double bay_x) {
   return s;
 }
 
+// A car rolling slowly (0.2 m/s, slower than the goal's max_speed) in the bay's centre: it moves
+// at the first step, so the level clock runs from frame 0, and it parks once the hold is over.
+Scene rollingInBay() {
+  Scene s = bayScene(0.0);
+  s.player.speed = 0.2;
+  return s;
+}
+
 RecordingCanvas overlay(const World& world, const ParkingChallenge& c, GoalView view = {}) {
   RecordingCanvas canvas;
   view.challenge = &c;
@@ -79,7 +87,7 @@ TEST(GoalOverlay, BayOffScreenGetsAnArrowWithTheDistance) {
 }
 
 TEST(GoalOverlay, ParkedPanelWithSummaryAndBest) {
-  const Scene scene = bayScene(0.0);
+  const Scene scene = rollingInBay();
   World world(scene);
   ParkingChallenge c(*scene.goal, 120.0, 100);
   c.observe(world);
@@ -91,44 +99,96 @@ TEST(GoalOverlay, ParkedPanelWithSummaryAndBest) {
   GoalView view;
   view.best = ParkingScore{600, 5.0, 0, 3};
   const RecordingCanvas canvas = overlay(world, c, view);
-  for (const char* text : {"PARKED", "Time", "Damage", "Stars", "Best", "5.0 s"}) {
+  for (const char* text : {"PARKED", "Time", "\xE2\x98\x85 parked", "\xE2\x98\x85 no damage",
+                           "\xE2\x98\x85 within par 12.0 s", "Best", "5.0 s"}) {
     EXPECT_TRUE(canvas.hasText(text)) << text;
   }
   view.new_best = true;
   EXPECT_TRUE(overlay(world, c, view).hasText("new best"));
 }
 
-// Steps `world` with no input until the challenge `c` is over.
-void runUntilOver(World& world, ParkingChallenge& c) {
-  while (!c.over()) {
-    world.step(InputFrame{});
+// Steps `world` holding `keys` until the challenge `c` is over (at most a minute).
+void runUntilOver(World& world, ParkingChallenge& c, const InputFrame& keys = {}) {
+  for (int i = 0; i < 7200 && !c.over(); ++i) {
+    world.step(keys);
     c.observe(world);
   }
+  ASSERT_TRUE(c.over());
 }
 
-// A bay 50 m away and a quarter of a second to reach it: the run ends TIME UP.
+const InputFrame kThrottle{true, false, false, false};
+
+// A bay 50 m away and half a second to reach it: a car that drives off runs out of time.
 Scene timeUpScene() {
   Scene scene = bayScene(50.0);
-  scene.goal->time_limit = 0.25;
+  scene.goal->time_limit = 0.5;
   return scene;
 }
 
-TEST(GoalOverlay, TimeUpPanel) {
+// TIME UP says what ended the run and what was still off.
+TEST(GoalOverlay, TimeUpPanelSaysWhatEndedTheRun) {
   const Scene scene = timeUpScene();
   World world(scene);
   ParkingChallenge c(*scene.goal, 120.0, 100);
   c.observe(world);
-  runUntilOver(world, c);
+  runUntilOver(world, c, kThrottle);
   ASSERT_TRUE(c.timedOut());
   const RecordingCanvas canvas = overlay(world, c);
   EXPECT_TRUE(canvas.hasText("TIME UP"));
+  EXPECT_EQ(canvas.rowValue("Ended"), "time limit 0.5 s");
+  EXPECT_NE(canvas.rowValue("Still off").find(" m to the bay"), std::string::npos);
+  EXPECT_EQ(canvas.rowValue("Damage"), "0");
   EXPECT_TRUE(canvas.hasText("none yet"));
+  EXPECT_FALSE(canvas.hasText("\xE2\x98\x85")) << "no stars for a run that did not park";
+}
+
+// A missed star says why: over par by how much.
+TEST(GoalOverlay, ParkedPanelNamesAMissedStar) {
+  Scene scene = rollingInBay();
+  scene.goal->par_time = 0.1;
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  runUntilOver(world, c);
+  ASSERT_TRUE(c.parkedFrame().has_value());
+  const RecordingCanvas canvas = overlay(world, c);
+  EXPECT_TRUE(canvas.hasText("\xE2\x98\x85 parked"));
+  EXPECT_TRUE(canvas.hasText("\xE2\x98\x85 no damage"));
+  EXPECT_TRUE(canvas.hasText("\xE2\x98\x86 over par by 0.4 s"));
+}
+
+// A level's GAME OVER says the car was wrecked and what was still off.
+TEST(GoalOverlay, GameOverInALevelSaysWhatEndedTheRun) {
+  Scene scene = test::sceneWith({test::parkedCar("A", 8.0, 0, 90)});
+  scene.player.health = 1;
+  scene.player.speed = 10.0;
+  Goal goal;
+  goal.bay.center = {0.0, 6.0};
+  scene.goal = goal;
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 1);
+  c.observe(world);
+  runUntilOver(world, c);
+  ASSERT_TRUE(world.gameOver());
+  ASSERT_TRUE(c.wrecked());
+  GoalView view;
+  view.challenge = &c;
+  DrawOptions options;
+  options.goal = &view;
+  options.game_over_rows = runSummaryRows(world, view);
+  RecordingCanvas canvas;
+  drawFrame(canvas, world, followCamera(world.carBox(), 12.0, {1280, 720}), world.carBox(),
+            options);
+  EXPECT_TRUE(canvas.hasText("GAME OVER"));
+  EXPECT_EQ(canvas.rowValue("Ended"), "wrecked (health 0)");
+  EXPECT_FALSE(canvas.rowValue("Still off").empty());
+  EXPECT_EQ(canvas.rowValue("Damage"), "1");
 }
 
 // The line under the timer: distance while driving, the hold while stopped in the bay, then what
 // ended the run; the end panel lists the keys it is given.
 TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
-  const Scene scene = bayScene(0.0);
+  const Scene scene = rollingInBay();
   World world(scene);
   ParkingChallenge c(*scene.goal, 120.0, 100);
   c.observe(world);
@@ -152,6 +212,26 @@ TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
   ParkingChallenge d(*far.goal, 120.0, 100);
   d.observe(away);
   EXPECT_EQ(timerDetail(d), "par 12.0 s   left 60.0 s   bay 10.0 m");
+}
+
+// Until the car moves the clock does not run: a player reading the task loses no time.
+TEST(GoalOverlay, TheTimerWaitsForTheFirstMove) {
+  const Scene scene = bayScene(10.0);
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  for (int i = 0; i < 240; ++i) {
+    world.step(InputFrame{false, false, i % 2 == 0, i % 2 == 1});  // steering only
+    c.observe(world);
+  }
+  EXPECT_TRUE(overlay(world, c).hasText("0.0 s"));
+  EXPECT_EQ(timerDetail(c), "par 12.0 s   left 60.0 s   bay 10.0 m");
+  for (int i = 0; i < 120; ++i) {
+    world.step(kThrottle);
+    c.observe(world);
+  }
+  EXPECT_TRUE(overlay(world, c).hasText("1.0 s"));
+  EXPECT_NE(timerDetail(c).find("left 59.0 s"), std::string::npos) << timerDetail(c);
 }
 
 // Bounding box of a fill, as (min, max) corners.
@@ -221,7 +301,7 @@ TEST(GoalOverlay, TimerDetailSaysTimeUp) {
   World world(scene);
   ParkingChallenge c(*scene.goal, 120.0, 100);
   c.observe(world);
-  runUntilOver(world, c);
+  runUntilOver(world, c, kThrottle);
   EXPECT_EQ(timerDetail(c), "time up");
 }
 
@@ -311,25 +391,35 @@ TEST(GoalOverlay, TaskPanelIsClearOfTheHudPanel) {
   }
 }
 
-TEST(GoalOverlay, TaskPanelFadesAfterFourSecondsOfPlayAndNeedsATask) {
-  const Scene scene = taskScene({10.0, 0.0});
-  World world(scene);
-  ParkingChallenge c(*scene.goal, 120.0, 100);
-  c.observe(world);
-  const auto playTo = [&](std::int64_t frame) {
-    while (world.frame() < frame) {
-      world.step(InputFrame{});
-      c.observe(world);
-    }
-  };
-  playTo(450);
-  const RecordingCanvas fading = overlay(world, c);  // 3.75 s: half faded
-  ASSERT_TRUE(fading.hasText("facing out"));
-  EXPECT_LT(fading.lastText("facing out")->color.a, 200);
-  EXPECT_GT(fading.lastText("facing out")->color.a, 50);
-  playTo(480);
-  EXPECT_FALSE(overlay(world, c).hasText("facing out"));
-  EXPECT_FALSE(overlay(world, c).hasText("Reverse bay"));
+// The task shows for the first 4 s of play, and after them until the car first moves; then it
+// fades out over half a second.
+TEST(GoalOverlay, TaskPanelStaysUntilTheCarMovesThenFades) {
+  for (const int wait : {0, 600}) {
+    const Scene scene = taskScene({10.0, 0.0});
+    World world(scene);
+    ParkingChallenge c(*scene.goal, 120.0, 100);
+    c.observe(world);
+    const auto playTo = [&](std::int64_t frame, const InputFrame& keys) {
+      while (world.frame() < frame) {
+        world.step(keys);
+        c.observe(world);
+      }
+    };
+    playTo(wait, InputFrame{});
+    EXPECT_TRUE(overlay(world, c).hasText("facing out")) << "waiting " << wait;
+    // Driving from here: with no wait, fading at 3.75 s and gone at 4 s; after a wait, fading a
+    // quarter of a second after the car moved and gone after half a second.
+    const std::int64_t fade_at = wait == 0 ? 450 : wait + 30;
+    const std::int64_t gone_at = wait == 0 ? 480 : wait + 61;
+    playTo(fade_at, kThrottle);
+    const RecordingCanvas fading = overlay(world, c);
+    ASSERT_TRUE(fading.hasText("facing out")) << wait;
+    EXPECT_LT(fading.lastText("facing out")->color.a, 200) << wait;
+    EXPECT_GT(fading.lastText("facing out")->color.a, 50) << wait;
+    playTo(gone_at, kThrottle);
+    EXPECT_FALSE(overlay(world, c).hasText("facing out")) << wait;
+    EXPECT_FALSE(overlay(world, c).hasText("Reverse bay")) << wait;
+  }
 
   Scene untitled = taskScene({10.0, 0.0});
   untitled.level->task.clear();
@@ -379,13 +469,18 @@ TEST(GoalOverlay, BayOutlineIsDrawnUnderThePlayersCar) {
     EXPECT_LT(l.order, body.front().order) << "the bay's outline is drawn over the car";
   }
   EXPECT_EQ(outline, 4);
+  // The heading arrow is paint too.
+  const std::vector<RecordingCanvas::Fill> arrow = canvas.fillsOf({255, 214, 70, 255});
+  ASSERT_EQ(arrow.size(), 2u);  // shaft and head
+  for (const RecordingCanvas::Fill& f : arrow) EXPECT_LT(f.order, body.front().order);
   // The timer stays on top of the world.
   const RecordingCanvas::Text* timer = canvas.lastText("par 12.0 s");
   ASSERT_NE(timer, nullptr);
   EXPECT_GT(timer->order, body.front().order);
 }
 
-// The camera keeps the level out of the HUD's top strip (hudInsets); the timer must fit in it.
+// The camera keeps the level out of the HUD's top strip (hudInsets); the timer must fit in it,
+// with the readout's row as well.
 TEST(GoalOverlay, TimerFitsInTheHudsTopStrip) {
   const Scene scene = bayScene(10.0);
   const World world(scene);
@@ -393,6 +488,12 @@ TEST(GoalOverlay, TimerFitsInTheHudsTopStrip) {
   c.observe(world);
   GoalView view;
   view.challenge = &c;
+  const Scene near = bayScene(0.9);
+  const World near_world(near);
+  ParkingChallenge near_challenge(*near.goal, 120.0, 100);
+  near_challenge.observe(near_world);
+  GoalView near_view;
+  near_view.challenge = &near_challenge;
   for (const Eigen::Vector2i& vp :
        {Eigen::Vector2i(1280, 720), Eigen::Vector2i(640, 480), Eigen::Vector2i(1920, 1080)}) {
     RecordingCanvas canvas(vp);
@@ -403,6 +504,130 @@ TEST(GoalOverlay, TimerFitsInTheHudsTopStrip) {
     ASSERT_NE(panel, nullptr);
     for (const Eigen::Vector2f& p : panel->points) {
       EXPECT_LE(p.y(), hudInsets(vp).top) << vp.transpose();
+    }
+    // Its tallest form, with the readout's row, too.
+    RecordingCanvas with_row(vp);
+    drawGoalOverlay(with_row, near_world, followCamera(near_world.carBox(), 12.0, vp),
+                    near_world.carBox(), near_view);
+    ASSERT_NE(with_row.lastText("0.9 m forward"), nullptr);
+    const RecordingCanvas::Fill* tall = backdropOf(with_row, *with_row.lastText("par 12.0 s"));
+    ASSERT_NE(tall, nullptr);
+    EXPECT_GT(bounds(*tall).second.y(), bounds(*panel).second.y());
+    EXPECT_LE(bounds(*tall).second.y(), timerPanelBottom(vp) + 1e-3f) << vp.transpose();
+    EXPECT_LE(timerPanelBottom(vp), hudInsets(vp).top) << vp.transpose();
+  }
+}
+
+// Near the bay the timer panel says what is still off, under its detail line, in the readout's
+// words and order; far away it does not (the detail line gives the distance).
+TEST(GoalOverlay, ReadoutUnderTheTimerNearTheBay) {
+  const Scene scene = bayScene(0.9);  // the bay's centre 0.9 m ahead of the car's
+  const World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  const RecordingCanvas canvas = overlay(world, c);
+  const RecordingCanvas::Text* readout = canvas.lastText("0.9 m forward");
+  const RecordingCanvas::Text* detail = canvas.lastText("par 12.0 s");
+  ASSERT_NE(readout, nullptr);
+  ASSERT_NE(detail, nullptr);
+  EXPECT_EQ(readout->color, (Rgba{255, 214, 70, 255}));
+  EXPECT_GT(readout->at.y(), detail->at.y());
+  const auto [lo, hi] = bounds(*backdropOf(canvas, *detail));
+  EXPECT_TRUE(readout->at.x() > lo.x() && readout->at.y() > lo.y() && readout->at.x() < hi.x() &&
+              readout->at.y() < hi.y())
+      << "the readout is outside the timer panel";
+
+  // Several at once on one line, in the order a driver fixes them.
+  Scene skewed = bayScene(0.0);
+  skewed.goal->bay.center = {1.0, 0.6};
+  skewed.goal->bay.heading_deg = 20.0;
+  const World skew_world(skewed);
+  ParkingChallenge d(*skewed.goal, 120.0, 100);
+  d.observe(skew_world);
+  EXPECT_TRUE(overlay(skew_world, d).hasText("1.0 m forward   0.6 m left   turn 20\xC2\xB0 left"));
+
+  // In position but rolling: stop.
+  Scene rolling = bayScene(0.0);
+  rolling.player.speed = 1.0;
+  const World roll_world(rolling);
+  ParkingChallenge e(*rolling.goal, 120.0, 100);
+  e.observe(roll_world);
+  EXPECT_NE(overlay(roll_world, e).lastText("stop"), nullptr);
+
+  // Far away: no readout.
+  const Scene far = bayScene(20.0);
+  const World far_world(far);
+  ParkingChallenge f(*far.goal, 120.0, 100);
+  f.observe(far_world);
+  const RecordingCanvas far_canvas = overlay(far_world, f);
+  EXPECT_TRUE(far_canvas.hasText("bay 20.0 m"));
+  EXPECT_FALSE(far_canvas.hasText("forward"));
+  EXPECT_FALSE(far_canvas.hasText("to the bay"));
+}
+
+// While the checks hold, a bar under the timer fills over the hold time.
+TEST(GoalOverlay, HoldBarFillsOverTheHoldTime) {
+  const Scene scene = rollingInBay();
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  const Rgba trough{55, 58, 64, 255};
+  const Rgba filled{90, 230, 120, 255};
+  // The fill drawn right after the trough (the bay's arrow is green too, but drawn earlier).
+  const auto barFraction = [&](const RecordingCanvas& canvas) {
+    const std::vector<RecordingCanvas::Fill> troughs = canvas.fillsOf(trough);
+    EXPECT_EQ(troughs.size(), 1u);
+    if (troughs.size() != 1u) return -1.0f;
+    for (const RecordingCanvas::Fill& f : canvas.fillsOf(filled)) {
+      if (f.order == troughs[0].order + 1) return f.width() / troughs[0].width();
+    }
+    return 0.0f;
+  };
+  EXPECT_FLOAT_EQ(barFraction(overlay(world, c)), 0.0f);
+  for (int i = 0; i < 30; ++i) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_NEAR(barFraction(overlay(world, c)), 0.5f, 1e-4f);
+  for (int i = 0; i < 15; ++i) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_NEAR(barFraction(overlay(world, c)), 0.75f, 1e-4f);
+  runUntilOver(world, c);
+  EXPECT_TRUE(overlay(world, c).fillsOf(trough).empty()) << "parked: no bar";
+}
+
+// The bay shows the heading it wants: an arrow along it, or one each way with either_direction.
+TEST(GoalOverlay, BayArrowPointsTheWayToFace) {
+  for (const bool either : {false, true}) {
+    Scene scene = bayScene(0.0);
+    scene.goal->bay.center = {0.0, 8.0};
+    scene.goal->bay.heading_deg = 90.0;  // facing up the screen
+    scene.goal->either_direction = either;
+    const World world(scene);
+    ParkingChallenge c(*scene.goal, 120.0, 100);
+    c.observe(world);
+    const Camera camera = followCamera(world.carBox(), 12.0, {1280, 720});
+    RecordingCanvas canvas;
+    GoalView view;
+    view.challenge = &c;
+    drawGoalBay(canvas, camera, view);
+    const Eigen::Vector2f centre = camera.toScreen(scene.goal->bay.center);
+    std::vector<float> tips;  // screen y of each arrowhead's tip relative to the bay's centre
+    for (const RecordingCanvas::Fill& f : canvas.fillsOf({255, 214, 70, 255})) {
+      if (f.points.size() != 3) continue;
+      float tip = 0.0f;
+      for (const Eigen::Vector2f& p : f.points) {
+        if (std::abs(p.y() - centre.y()) > std::abs(tip)) tip = p.y() - centre.y();
+      }
+      EXPECT_NEAR(f.centroid().x(), centre.x(), 1e-3f);
+      tips.push_back(tip);
+    }
+    ASSERT_EQ(tips.size(), either ? 2u : 1u);
+    EXPECT_LT(tips[0], 0.0f) << "the arrow points down the screen, not up";
+    if (either) {
+      EXPECT_GT(tips[1], 0.0f);
     }
   }
 }

@@ -120,6 +120,17 @@ class RecordingCanvas : public Canvas {
     return false;
   }
 
+  /// The text drawn on the same row as the text `label` (to its right), or "" without one.
+  [[nodiscard]] std::string rowValue(const std::string& label) const {
+    for (const Text& t : texts) {
+      if (t.text != label) continue;
+      for (const Text& v : texts) {
+        if (&v != &t && v.at.y() == t.at.y() && v.at.x() > t.at.x()) return v.text;
+      }
+    }
+    return "";
+  }
+
   Rgba cleared;               ///< Last clear colour.
   std::vector<Fill> fills;    ///< Since the last clear.
   std::vector<Line> lines;    ///< Since the last clear.
