@@ -13,6 +13,7 @@
 #include "platform/png_render.hpp"
 #include "render/camera_rig.hpp"
 #include "render/effects.hpp"
+#include "render/goal_overlay.hpp"
 
 namespace cardemo::app {
 namespace {
@@ -24,6 +25,7 @@ struct RenderOptions {
   std::optional<std::int64_t> frame;
   bool debug = false;
   bool help = false;
+  bool paused = false;
   bool sprites = false;
   bool rig = false;
   bool zoom_given = false;
@@ -46,14 +48,17 @@ int fail(const std::string& message) {
   return 2;
 }
 
-// What watches the world step by step, as the window's do: hit feedback and the camera rig.
+// What watches the world step by step, as the window's do: hit feedback, the camera rig and the
+// level's challenge (its timer, readout and end panel are drawn).
 struct Observers {
   Effects effects;
   CameraRig rig;
+  std::optional<ParkingChallenge> challenge;
   void step(World& world, const InputFrame& input) {
     world.step(input);
     effects.observe(world);
     rig.step(world);
+    if (challenge) challenge->observe(world);
   }
 };
 
@@ -83,7 +88,10 @@ int runRenderCommand(const RenderOptions& options) {
   std::optional<World> world;
   std::optional<Observers> observers;
   const Eigen::Vector2i viewport{options.width, options.height};
-  auto watch = [&] { observers.emplace(Observers{Effects(*world), CameraRig(*world, viewport)}); };
+  auto watch = [&] {
+    observers.emplace(
+        Observers{Effects(*world), CameraRig(*world, viewport), startChallenge(*world)});
+  };
   if (isReplayFile(options.input)) {
     const Parsed<Replay> replay = loadReplay(options.input);
     if (!replay.ok()) return fail(replay.error().toString());
@@ -127,6 +135,12 @@ int runRenderCommand(const RenderOptions& options) {
   settings.options.debug_overlay = options.debug;
   settings.options.frame_counter = true;  // a picture of frame N says which frame it is
   settings.options.help = options.help;
+  settings.options.paused = options.paused;
+  GoalView goal;
+  if (observers->challenge) {
+    goal.challenge = &*observers->challenge;
+    settings.options.goal = &goal;
+  }
   settings.options.status = baseName(options.input) + "  -  " + world->scene().name;
   if (std::string why = renderPng(*world, settings, options.out); !why.empty()) return fail(why);
   std::printf("wrote %s (%dx%d, frame %lld)\n", options.out.c_str(), options.width, options.height,
@@ -156,6 +170,7 @@ void addRenderCommand(CLI::App& app, int& exit_code) {
   sub->add_flag("--debug", options->debug,
                 "Draw the debug overlay (AABB, OBBs, candidates, contacts, counters)");
   sub->add_flag("--help-panel", options->help, "Draw the F1 help panel");
+  sub->add_flag("--paused", options->paused, "Draw the PAUSED banner");
   sub->add_flag(
       "--sprites", options->sprites,
       "Draw cars, tyres and ground with the sprites in assets/sprites (default: vectors)");
