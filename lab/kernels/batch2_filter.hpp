@@ -10,7 +10,7 @@
 //
 // Included by filter_avx2.cpp and batch_avx512.cpp only; everything here has internal linkage.
 //
-// Why the verdict is exact (docs/architecture.md, "The float pre-filters", sums it up).
+// Why the verdict is exact (lab/README.md, "The float pre-filters", sums it up).
 // Write u = 2^-24, R = |cB - cA|, H = hAx + hAy + hBx + hBy, and g_k for the gap on axis k computed
 // with exact arithmetic from the stored doubles (the quantity overlapObb2 rounds). Under the
 // standard model fl(x op y) = (x op y)(1 + d), |d| <= u (Higham, "Accuracy and Stability of

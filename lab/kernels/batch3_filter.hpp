@@ -10,7 +10,7 @@
 // The gaps are those of the double kernels' A-frame filter (batch_kernels.hpp, fastEdge): with
 // t = A^T d and R = A^T B, A's face i, B's face j and the edge axis a_i x b_j written in A's frame.
 //
-// Why the verdict is exact (docs/architecture.md, "The float pre-filters"). Write u = 2^-24, D =
+// Why the verdict is exact (lab/README.md, "The float pre-filters"). Write u = 2^-24, D =
 // |d|_1 for the exact centre difference, H for the sum of the six half extents, S = D + H, and
 // P = 1.0001 u (|xA|_1 + |xB|_1) for the rounding of the centres taken relative to the batch's
 // reference point. Under the standard model fl(x op y) = (x op y)(1 + e), |e| <= u, an fma rounding

@@ -25,9 +25,8 @@
 namespace cardemo::batch_detail {
 
 // The 2D boolean kernel prefetches the double fields of the boxes its filter leaves open when
-// they take more bytes than this. Measured on the benchmark's boxes (docs/perf/history.md, "2D
-// batch kernels"): at 64k boxes (3 MiB) the prefetches cost more than they saved, at 1M (48 MiB)
-// they saved about 30 % of the time.
+// they take more bytes than this. Measured on the benchmark's boxes: at 64k boxes (3 MiB) the
+// prefetches cost more than they saved, at 1M (48 MiB) they saved about 30 % of the time.
 constexpr std::size_t kPrefetchAbove = std::size_t{16} << 20;
 
 std::size_t overlap2FilteredAvx512(const Box2One& a, const Box2Arrays& b, const Box2FilterOne& fa,
@@ -59,7 +58,7 @@ std::size_t overlap3FilteredAvx512(const Box3One& a, const Box3Arrays& b, const 
                                    const Box3FilterArrays& fb, std::size_t first, std::size_t last,
                                    std::uint8_t* hit) {
   // The open boxes are copied lane by lane, not gathered as in the 2D kernel above: with fifteen
-  // fields the gathers were slower at 1M boxes (docs/perf/history.md, "2D batch kernels").
+  // fields the gathers were slower at 1M boxes (lab/README.md, "Ideas measured and not kept").
   return runFilteredOverlap3<Float16>(
       fa, fb, first, last, hit, [&](const std::size_t* boxes, std::size_t count) {
         decideOpenBoxes<8>(fieldsOf(b).field, boxes, count, hit,

@@ -270,7 +270,7 @@ CARDEMO_BATCH_INLINE L separation3(const Box3One& a, const Box3Arrays& b, std::s
 }
 
 // ---------------------------------------------------------------------------------------------
-// 3D, fast: the A-frame filter (docs/architecture.md, "Batch kernels"). The edge axis a_i x b_j in
+// 3D, fast: the A-frame filter (lab/README.md, "The 3D double kernels"). The edge axis a_i x b_j in
 // A's frame is e_i x (A^T b_j), whose gap (Gottschalk et al. 1996) needs only entries of R = A^T B
 // and of t = A^T d, both already formed for the face axes: about a dozen operations per axis
 // instead of fifty. Its error against the gap on the stored columns' exact cross product, which
@@ -525,7 +525,7 @@ void runCollide2(const Box2One& a, const Box2Arrays& b, std::size_t first, std::
   if constexpr (L::kWidth == 8) {
     // A lane group reads one cache line of each field: the six lines eight groups ahead are
     // requested now. Once the boxes no longer fit in L2 this hides more of the wait than the
-    // hardware prefetcher does on its own (docs/perf/history.md, "2D batch kernels").
+    // hardware prefetcher does on its own.
     constexpr std::size_t kAhead = 8 * L::kWidth;
     for (; i + L::kWidth <= last; i += L::kWidth) {
       const double* const fields[6] = {b_copy.cx, b_copy.cy, b_copy.ux,
@@ -577,7 +577,7 @@ template <class L>
 // On more than one lane, the boxes the filter leaves undecided (separations within about 2^-39 of
 // the pair's scale of zero: resting contacts) go on one by one, as in the boolean pre-filters
 // (filter_run.hpp), so the accurate kernel runs on them alone rather than on each of their lane
-// groups (timings: docs/perf/history.md, "3D batch kernels").
+// groups (lab/README.md, "The float pre-filters").
 template <class L>
 [[gnu::flatten]] void runSeparation3(const Box3One& a, const Box3Arrays& b, std::size_t first,
                                      std::size_t last, double* separation) {

@@ -8,7 +8,7 @@
 // Why: with a tenth of the boxes near touching, five lane groups in six hold an open box, and
 // runFilteredByBox's loop over the open lanes (one to four turns, at random) and decideOpenBoxes's
 // copies lane by lane (eight scalar stores read back as one vector, which store forwarding cannot
-// serve) cost as much as the filter itself (docs/perf/history.md, "2D batch kernels").
+// serve) cost as much as the filter itself.
 //
 // Included by batch_avx512.cpp only (built with -mavx512f); everything here has internal linkage.
 

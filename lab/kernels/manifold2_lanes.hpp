@@ -11,10 +11,10 @@
 //
 // Choices are carried as masks combined with bitwise logic rather than blends, and a
 // multiplication by a sign of +-1 (exact: it only sets the sign bit) is a masked sign flip: a
-// blend for each choice and a multiplication for each sign made the kernel about a third slower
-// (docs/perf/history.md). Beyond batch_kernels.hpp's lane interface it needs, on masks, ^ and
-// andNot(a, b) = b where a is not set; negateWhere(m, x); onlyWhere(m, x) (x where m is set, else
-// +0) and onlyWhereNot(m, x); flipSign(x, sign_bits); storeInt32(int32_t*, L).
+// blend for each choice and a multiplication for each sign made the kernel about a third slower.
+// Beyond batch_kernels.hpp's lane interface it needs, on masks, ^ and andNot(a, b) = b where a is
+// not set; negateWhere(m, x); onlyWhere(m, x) (x where m is set, else +0) and onlyWhereNot(m, x);
+// flipSign(x, sign_bits); storeInt32(int32_t*, L).
 
 #include "lab/kernels/batch_kernels.hpp"
 

@@ -87,8 +87,7 @@ UniformGrid::Level UniformGrid::buildLevel(std::span<const Aabb2> boxes,
   const double wy = finiteWidth(level.bounds.max.y() - level.bounds.min.y());
   double cell = kCellScale * std::sqrt(wx * wy / static_cast<double>(n));
   // No smaller than the boxes' mean reach: a window spans the query plus the reach, so smaller
-  // cells add rows (each a bit scan and a step) without leaving out boxes (docs/perf/history.md,
-  // "Broad-phase query", gives the counts).
+  // cells add rows (each a bit scan and a step) without leaving out boxes.
   cell = std::max(cell, 0.5 * (level.reach.x() + level.reach.y()));
   if (!(cell > 0.0) || !std::isfinite(cell)) {
     // Collinear or coincident boxes: spread them along the longer side.

@@ -26,7 +26,7 @@ struct CellShape {
 };
 // Square first, so that it wins a tie. A query scans each row of its window as one run of boxes:
 // taller cells mean fewer rows, narrower ones fewer boxes left of the window in each row. Which
-// costs less depends on the layout (docs/perf/history.md, "Broad-phase query").
+// costs less depends on the layout.
 constexpr CellShape kCellShapes[] = {{1.0, 1.0}, {0.25, 1.5}};
 
 // Levels with fewer members keep square cells: there the estimate would cost more than the build
@@ -48,7 +48,7 @@ CellCounts countCells(std::span<const Aabb2> boxes, std::span<const std::uint32_
   return counts;
 }
 
-// Relative costs of a query's scan (callgrind, docs/perf/history.md): about 9 instructions for
+// Relative costs of a query's scan (instructions counted with callgrind): about 9 for
 // each occupied row of its window and 18 for each step of four boxes (at least one a row).
 constexpr double kRowCost = 9.0, kStepCost = 18.0;
 // Members placed in cells for the estimate: all up to this many, else an even subsample of about

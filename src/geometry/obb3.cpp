@@ -201,8 +201,8 @@ const double* numbersOf(const Obb3& box) {
   return numbers;
 }
 
-// The A-frame filter (the batch kernels' one, batch_kernels.hpp; docs/architecture.md, "Batch
-// kernels"; obb3_detail::edgeBound computes it, for this file and the AVX2 kernel alike). The edge
+// The A-frame filter (the batch kernels' one, batch_kernels.hpp; docs/architecture.md, "The 3D
+// filter"; obb3_detail::edgeBound computes it, for this file and the AVX2 kernel alike). The edge
 // axis a_i x b_j in A's frame is e_i x (A^T b_j): its gap needs only entries of R = A^T B and t, a
 // dozen operations instead of the accurate form's fifty (with six fma calls, library calls on a
 // build without -mfma). Against the gap on the stored columns' exact cross product, which edgeGap
