@@ -38,7 +38,7 @@ export CARDEMO_TEST_SCALE=${CARDEMO_TEST_SCALE:-0.1}
 # run beside them at the lowest priority (nice 19): the window tests get the CPU when they want it.
 (
   suite=0
-  nice -n 19 ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE platform \
+  nice -n 19 ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE '^platform$' \
     ${CARDEMO_CTEST_ARGS:-} || suite=$?
   fuzzed=0
   CARDEMO_FUZZ_BUILD_DIR="$build" nice -n 19 "$root/scripts/fuzz.sh" "${CARDEMO_FUZZ_SECONDS:-60}" ||
@@ -49,8 +49,7 @@ export CARDEMO_TEST_SCALE=${CARDEMO_TEST_SCALE:-0.1}
 ) >"$build/suite-and-fuzz.log" 2>&1 &
 rest=$!
 platform=0
-ctest --test-dir "$build" --output-on-failure -j1 -L platform --repeat until-pass:3 \
-  ${CARDEMO_CTEST_ARGS:-} || platform=$?
+run_window_tests "$build" ${CARDEMO_CTEST_ARGS:-} || platform=$?
 stage_step "ctest (platform)"
 wait "$rest" && others=0 || others=$?
 cat "$build/suite-and-fuzz.log"
