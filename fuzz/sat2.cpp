@@ -8,7 +8,6 @@
 // more than 2e-6 m from the exact value, a normal that is not unit or does not realise `sep` from
 // A towards B, `hit` not equal to `sep <= 0`, or NaN/inf. Outside it: no NaN/inf, no crash.
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +15,7 @@
 
 #include "compare/exact/exact_sat.hpp"
 #include "fuzz_check.hpp"
+#include "geometry/bit_cast.hpp"
 #include "geometry/sat_obb2.hpp"
 #include "lab/geometry/collide_quads.hpp"
 #include "shapes2.hpp"
@@ -85,8 +85,7 @@ void check(const Shape2& a, const Shape2& b) {
     // The lab's quadrilateral SAT (lab/geometry/collide_quads) gives collidePolygons' bits.
     const SatResult2 q = collideQuads(a.poly, b.poly);
     require(q.hit == ab.hit &&
-                std::bit_cast<std::uint64_t>(q.separation) ==
-                    std::bit_cast<std::uint64_t>(ab.separation) &&
+                bitCast<std::uint64_t>(q.separation) == bitCast<std::uint64_t>(ab.separation) &&
                 q.normal == ab.normal,
             "collideQuads differs from collidePolygons" + context(a, b, ab));
   }

@@ -11,7 +11,6 @@
 // pre-filter before the boolean kernel), or a hit not equal to its separation's `sep <= 0`.
 // Outside it: no NaN/inf, no crash.
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +21,7 @@
 #include "compare/exact/exact_sat.hpp"
 #include "fuzz_check.hpp"
 #include "geometry/batch_path.hpp"
+#include "geometry/bit_cast.hpp"
 #include "lab/geometry/obb3_paths.hpp"
 #include "lab/kernels/obb3_batch.hpp"
 #include "shapes3.hpp"
@@ -90,8 +90,7 @@ void requireBatchAgrees(const Obb3& a, const Obb3& b, bool checked) {
     // The lab's one-pair vector forms give src's bits on every path.
     const SatResult3 one = collideObb3OnPath(a, b), want = collideObb3(a, b);
     require(one.axis_index == want.axis_index &&
-                std::bit_cast<std::uint64_t>(one.separation) ==
-                    std::bit_cast<std::uint64_t>(want.separation) &&
+                bitCast<std::uint64_t>(one.separation) == bitCast<std::uint64_t>(want.separation) &&
                 one.normal == want.normal && overlapObb3OnPath(a, b) == overlapObb3(a, b),
             std::string("collideObb3OnPath differs from collideObb3 on the ") +
                 batchPathName(path) + " path\n  A: " + describe(a) + "\n  B: " + describe(b));
@@ -103,7 +102,7 @@ void requireBatchAgrees(const Obb3& a, const Obb3& b, bool checked) {
       require(hit[i] == (sep[i] <= 0.0 ? 1 : 0), "batch hit disagrees with batch sep" + where);
       if (!first_hit.empty()) {
         require(hit[i] == first_hit[i], "batch hit differs from the portable path's" + where);
-        require(std::bit_cast<std::uint64_t>(sep[i]) == std::bit_cast<std::uint64_t>(first_sep[i]),
+        require(bitCast<std::uint64_t>(sep[i]) == bitCast<std::uint64_t>(first_sep[i]),
                 "batch sep differs from the portable path's" + where);
       }
     }

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/number_text.hpp"
 #include "geometry/sat_obb2.hpp"
+#include "io/number_text.hpp"
 #include "io/pair_csv.hpp"
 
 #ifdef CARDEMO_HAVE_COMPARE

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "app/number_text.hpp"
 #include "geometry/angle.hpp"
 #include "io/atomic_file.hpp"
 #include "io/atomic_stream.hpp"
+#include "io/number_text.hpp"
 #include "io/replay_runner.hpp"
 #include "io/summary_json.hpp"
 #include "sim/parking_readout.hpp"

@@ -4,9 +4,9 @@
 /// stored copy), so both give it bit for bit alike.
 
 #include <Eigen/Core>
-#include <bit>
 #include <cstdint>
 
+#include "geometry/bit_cast.hpp"
 #include "geometry/obb3.hpp"
 
 namespace cardemo::obb3_detail {
@@ -17,7 +17,7 @@ namespace cardemo::obb3_detail {
   const std::uint64_t flip = static_cast<std::uint64_t>(negate) << 63;
   Eigen::Vector3d out;
   for (int k = 0; k < 3; ++k) {
-    out[k] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v[k]) ^ flip);
+    out[k] = bitCast<double>(bitCast<std::uint64_t>(v[k]) ^ flip);
   }
   return out;
 }

@@ -2,12 +2,12 @@
 
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <optional>
 #include <span>
 #include <utility>
 
+#include "io/number_text.hpp"
 #include "io/printable.hpp"
 #include "io/replay_text.hpp"
 #include "io/text_lines.hpp"
@@ -54,16 +54,17 @@ bool parseField(std::string_view field, const Column& column, double& out, std::
     why = "empty";
     return false;
   }
-  // from_chars rejects a leading '+', which spreadsheets and printf("%+g") write.
+  // readNumber, like from_chars, rejects a leading '+', which spreadsheets and printf("%+g")
+  // write.
   std::string_view digits = field;
   if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
   double v = 0.0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (ec == std::errc::result_out_of_range) {
+  const NumberRead read = readNumber(digits, v);
+  if (read.error == std::errc::result_out_of_range) {
     why = "number out of range " + inQuotes(field);
     return false;
   }
-  if (ec != std::errc() || end != digits.data() + digits.size()) {
+  if (read.error != std::errc() || read.length != digits.size()) {
     why = "not a number: " + inQuotes(field);
     return false;
   }

@@ -1,7 +1,6 @@
 #include "sim/world.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +9,7 @@
 #include <utility>
 
 #include "geometry/angle.hpp"
+#include "geometry/bit_cast.hpp"
 #include "sim/contact_response.hpp"
 
 namespace cardemo {
@@ -56,7 +56,7 @@ bool sameBox(const Obb2& a, const Obb2& b) {
 }
 
 bool sameBits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  return bitCast<std::uint64_t>(a) == bitCast<std::uint64_t>(b);
 }
 
 // Every field bit for bit (so -0.0 differs from 0.0 and a NaN equals itself, as in the state hash).

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "geometry/angle.hpp"
+#include "geometry/bit_cast.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo {
@@ -18,7 +18,7 @@ namespace {
 
 // Bit patterns, so that -0.0 differs from 0.0 and "identical" means identical.
 std::uint64_t bitsOf(double v) {
-  return std::bit_cast<std::uint64_t>(v);
+  return bitCast<std::uint64_t>(v);
 }
 
 bool sameObb(const Obb2& a, const Obb2& b) {

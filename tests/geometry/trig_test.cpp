@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,6 +9,7 @@
 #include <random>
 
 #include "../support/test_scale.hpp"
+#include "geometry/bit_cast.hpp"
 
 namespace cardemo {
 namespace {
@@ -40,7 +40,7 @@ double logUniform(std::mt19937_64& rng, int lo, int hi) {
 }
 
 bool sameBits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  return bitCast<std::uint64_t>(a) == bitCast<std::uint64_t>(b);
 }
 
 TEST(Trig, CosSinWithinAnUlpOfLongDouble) {
@@ -166,7 +166,7 @@ TEST(Trig, BitsArePinned) {
   std::mt19937_64 rng(2026);
   std::uint64_t hash = 14695981039346656037ull;
   const auto fold = [&hash](double v) {
-    hash = (hash ^ std::bit_cast<std::uint64_t>(v)) * 1099511628211ull;
+    hash = (hash ^ bitCast<std::uint64_t>(v)) * 1099511628211ull;
   };
   for (int i = 0; i < 20000; ++i) {
     const double heading = uniform(rng, -kPi, kPi);

@@ -4,7 +4,6 @@
 // on named cases at the edge of the bound.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -12,6 +11,7 @@
 
 #include "../support/test_scale.hpp"
 #include "collision/narrow_phase.hpp"
+#include "geometry/bit_cast.hpp"
 #include "key_frames.hpp"
 #include "scene_builders.hpp"
 #include "sim/world.hpp"
@@ -29,7 +29,7 @@ WorldSettings everyTest() {
 }
 
 std::string bitsOf(double x) {
-  return std::to_string(std::bit_cast<std::uint64_t>(x));
+  return std::to_string(bitCast<std::uint64_t>(x));
 }
 
 // The frame's contacts, bit for bit.

@@ -2,17 +2,17 @@
 /// Test helpers for code with several dispatch paths (geometry/batch_path): the paths to run, and
 /// a guard that restores the process-wide choice.
 
-#include <bit>
 #include <cstdint>
 #include <vector>
 
 #include "geometry/batch_path.hpp"
+#include "geometry/bit_cast.hpp"
 
 namespace cardemo::testing {
 
 /// True when x and y are the same double bit for bit (so -0 differs from +0, and NaN can match).
 inline bool sameBits(double x, double y) {
-  return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
+  return bitCast<std::uint64_t>(x) == bitCast<std::uint64_t>(y);
 }
 
 /// Every path this build and CPU can run: the portable one always, the wider ones where the CPU

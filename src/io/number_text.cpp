@@ -1,0 +1,241 @@
+#include "io/number_text.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+// snprintf and strtod follow LC_NUMERIC; cardemo never calls setlocale, so they run in the "C"
+// locale, with '.' as the decimal point, as std::to_chars and std::from_chars always do.
+
+namespace cardemo {
+namespace {
+
+// 17 significant digits tell every double apart.
+constexpr int kMaxDigits = 17;
+
+// digits * 10^(exponent - count + 1): `count` significant digits, the first one not zero, and
+// `exponent` the power of ten of the first one (scientific notation's exponent).
+struct Decimal {
+  std::uint64_t digits = 0;
+  int count = 0;
+  int exponent = 0;
+};
+
+std::uint64_t powerOfTen(int n) {
+  std::uint64_t p = 1;
+  for (int i = 0; i < n; ++i) p *= 10;
+  return p;
+}
+
+// `magnitude` (finite, > 0) rounded to `count` significant digits; printf rounds exactly, ties
+// to even.
+Decimal roundedTo(double magnitude, int count) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*e", count - 1, magnitude);
+  Decimal d;
+  d.count = count;
+  const char* c = text;
+  for (; *c != 'e'; ++c) {
+    if (*c != '.') d.digits = d.digits * 10 + static_cast<std::uint64_t>(*c - '0');
+  }
+  d.exponent = std::atoi(c + 1);
+  return d;
+}
+
+// The double that the decimal reads back as (strtod rounds exactly, ties to even).
+double valueOf(const Decimal& d) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%llue%d", static_cast<unsigned long long>(d.digits),
+                d.exponent - d.count + 1);
+  return std::strtod(text, nullptr);
+}
+
+// The next decimal of the same digit count up (+1) or down (-1).
+Decimal neighbour(Decimal d, int direction) {
+  const std::uint64_t lowest = powerOfTen(d.count - 1);
+  if (direction > 0) {
+    d.digits += 1;
+    if (d.digits == lowest * 10) {
+      d.digits = lowest;
+      d.exponent += 1;
+    }
+  } else {
+    d.digits -= 1;
+    if (d.digits < lowest) {
+      d.digits = lowest * 10 - 1;
+      d.exponent -= 1;
+    }
+  }
+  return d;
+}
+
+// A decimal of `count` digits that reads back as `magnitude`, the nearest one when there are two;
+// digits == 0 when there is none. Only the two decimals on either side of `magnitude` can qualify:
+// the nearest, or, when it reads back wrong, the one on the other side (the rounding interval of
+// a power of two is wider above it than below).
+Decimal readsBackWith(double magnitude, int count) {
+  const Decimal nearest = roundedTo(magnitude, count);
+  const double back = valueOf(nearest);
+  if (back == magnitude) return nearest;
+  const Decimal other = neighbour(nearest, back < magnitude ? 1 : -1);
+  return valueOf(other) == magnitude ? other : Decimal{};
+}
+
+// The fewest significant digits that read back as `magnitude` (finite, > 0). Whether some decimal
+// of n digits reads back is monotone in n (one of n digits is one of n + 1 with a trailing zero),
+// so the count is found by bisection.
+Decimal shortestDecimal(double magnitude) {
+  int low = 1;
+  int high = kMaxDigits;
+  while (low < high) {
+    const int middle = (low + high) / 2;
+    if (readsBackWith(magnitude, middle).count != 0) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  const Decimal d = readsBackWith(magnitude, low);
+  assert(d.count == low);
+  return d;
+}
+
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+// True when `text` starts with `word` (lower case), in any case.
+bool startsWithWord(std::string_view text, std::string_view word) {
+  if (text.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i) {
+    const char c =
+        text[i] >= 'A' && text[i] <= 'Z' ? static_cast<char>(text[i] - 'A' + 'a') : text[i];
+    if (c != word[i]) return false;
+  }
+  return true;
+}
+
+// Length of "nan" or "nan(chars)" at the start of `text`, chars letters, digits and '_'.
+std::size_t nanLength(std::string_view text) {
+  std::size_t at = 3;
+  if (at >= text.size() || text[at] != '(') return 3;
+  for (++at; at < text.size(); ++at) {
+    const char c = text[at];
+    if (c == ')') return at + 1;
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    if (!letter && !isDigit(c) && c != '_') return 3;
+  }
+  return 3;
+}
+
+std::string nonFiniteText(double value) {
+  if (std::isnan(value)) return std::signbit(value) ? "-nan" : "nan";
+  return value < 0 ? "-inf" : "inf";
+}
+
+std::string scientificText(const Decimal& d) {
+  const std::string digits = std::to_string(d.digits);
+  std::string out(1, digits[0]);
+  if (d.count > 1) out += '.' + digits.substr(1);
+  out += d.exponent < 0 ? "e-" : "e+";
+  const int magnitude = std::abs(d.exponent);
+  if (magnitude < 10) out += '0';
+  out += std::to_string(magnitude);
+  return out;
+}
+
+// Fixed notation of the shortest decimal `d` of `magnitude`.
+std::string fixedShortestText(double magnitude, const Decimal& d) {
+  const std::string digits = std::to_string(d.digits);
+  if (d.exponent >= d.count - 1) {
+    // An integer. Past the significant digits std::to_chars writes the exact value's digits (of
+    // several texts of the same length it takes the nearest), as printf's %.0f does.
+    if (d.exponent == d.count - 1) return digits;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f", magnitude);
+    return text;
+  }
+  if (d.exponent >= 0) {
+    const auto point = static_cast<std::size_t>(d.exponent + 1);
+    return digits.substr(0, point) + '.' + digits.substr(point);
+  }
+  return "0." + std::string(static_cast<std::size_t>(-d.exponent - 1), '0') + digits;
+}
+
+}  // namespace
+
+std::string numberText(double value) {
+  if (!std::isfinite(value)) return nonFiniteText(value);
+  const std::string sign = std::signbit(value) ? "-" : "";
+  if (value == 0.0) return sign + "0";
+  const double magnitude = std::abs(value);
+  const Decimal d = shortestDecimal(magnitude);
+  // Lengths without the sign; scientific has "e+" and at least two exponent digits.
+  const int exponent_digits = std::abs(d.exponent) >= 100 ? 3 : 2;
+  const int scientific = d.count + (d.count > 1 ? 1 : 0) + 2 + exponent_digits;
+  int fixed = 0;
+  if (d.exponent < 0) {
+    fixed = 2 + (-d.exponent - 1) + d.count;  // "0.", zeros, digits
+  } else {
+    fixed = d.count <= d.exponent + 1 ? d.exponent + 1 : d.count + 1;
+  }
+  return sign + (fixed <= scientific ? fixedShortestText(magnitude, d) : scientificText(d));
+}
+
+std::string fixedText(double value, int decimals) {
+  assert(decimals >= 0);
+  if (!std::isfinite(value)) return nonFiniteText(value);
+  const int size = std::snprintf(nullptr, 0, "%.*f", decimals, value);
+  std::string out(static_cast<std::size_t>(size) + 1, '\0');
+  std::snprintf(out.data(), out.size(), "%.*f", decimals, value);
+  out.pop_back();
+  return out;
+}
+
+NumberRead readNumber(std::string_view text, double& value) {
+  std::size_t at = 0;
+  const bool negative = !text.empty() && text[0] == '-';
+  if (negative) at = 1;
+  const std::string_view rest = text.substr(at);
+  if (startsWithWord(rest, "inf")) {
+    value = negative ? -std::numeric_limits<double>::infinity()
+                     : std::numeric_limits<double>::infinity();
+    return {at + (startsWithWord(rest, "infinity") ? 8u : 3u), {}};
+  }
+  if (startsWithWord(rest, "nan")) {
+    value = negative ? -std::numeric_limits<double>::quiet_NaN()
+                     : std::numeric_limits<double>::quiet_NaN();
+    return {at + nanLength(rest), {}};
+  }
+  // Digits with at most one point, at least one digit; then an exponent if it has digits.
+  bool nonzero = false;
+  std::size_t digits = 0;
+  const auto scanDigits = [&] {
+    for (; at < text.size() && isDigit(text[at]); ++at, ++digits) nonzero |= text[at] != '0';
+  };
+  scanDigits();
+  if (at < text.size() && text[at] == '.') {
+    ++at;
+    scanDigits();
+  }
+  if (digits == 0) return {0, std::errc::invalid_argument};
+  if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+    std::size_t e = at + 1;
+    if (e < text.size() && (text[e] == '+' || text[e] == '-')) ++e;
+    if (e < text.size() && isDigit(text[e])) {
+      at = e;
+      while (at < text.size() && isDigit(text[at])) ++at;
+    }
+  }
+  const std::string number(text.substr(0, at));
+  const double read = std::strtod(number.c_str(), nullptr);
+  if (std::isinf(read) || (read == 0.0 && nonzero)) return {at, std::errc::result_out_of_range};
+  value = read;
+  return {at, {}};
+}
+
+}  // namespace cardemo
