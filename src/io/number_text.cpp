@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -25,33 +26,33 @@ struct Decimal {
   int exponent = 0;
 };
 
+// A double's first 17 significant digits, rounded exactly (printf: ties to even), as characters.
+struct Digits17 {
+  char digit[kMaxDigits];
+  int exponent = 0;
+};
+
 std::uint64_t powerOfTen(int n) {
   std::uint64_t p = 1;
   for (int i = 0; i < n; ++i) p *= 10;
   return p;
 }
 
-// `magnitude` (finite, > 0) rounded to `count` significant digits; printf rounds exactly, ties
-// to even.
-Decimal roundedTo(double magnitude, int count) {
+// printf's "%.*e" text of `magnitude` (finite, > 0) with `count` digits, as a Decimal.
+Decimal printedDecimal(double magnitude, int count, char* digits_out = nullptr) {
   char text[40];
   std::snprintf(text, sizeof text, "%.*e", count - 1, magnitude);
   Decimal d;
   d.count = count;
+  int n = 0;
   const char* c = text;
   for (; *c != 'e'; ++c) {
-    if (*c != '.') d.digits = d.digits * 10 + static_cast<std::uint64_t>(*c - '0');
+    if (*c == '.') continue;
+    if (digits_out != nullptr) digits_out[n++] = *c;
+    d.digits = d.digits * 10 + static_cast<std::uint64_t>(*c - '0');
   }
   d.exponent = std::atoi(c + 1);
   return d;
-}
-
-// The double that the decimal reads back as (strtod rounds exactly, ties to even).
-double valueOf(const Decimal& d) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%llue%d", static_cast<unsigned long long>(d.digits),
-                d.exponent - d.count + 1);
-  return std::strtod(text, nullptr);
 }
 
 // The next decimal of the same digit count up (+1) or down (-1).
@@ -73,12 +74,36 @@ Decimal neighbour(Decimal d, int direction) {
   return d;
 }
 
+// `magnitude` rounded exactly to `count` (< 17) digits, from its 17 digits `all`. Rounding those
+// again is exact unless the digits dropped read 50...0 (the first rounding may have made that
+// tie): then printf rounds `magnitude` itself.
+Decimal roundedTo(double magnitude, const Digits17& all, int count) {
+  bool tail_zero = true;
+  for (int i = count + 1; i < kMaxDigits; ++i) tail_zero &= all.digit[i] == '0';
+  const char next = all.digit[count];
+  if (next == '5' && tail_zero) return printedDecimal(magnitude, count);
+  Decimal d{0, count, all.exponent};
+  for (int i = 0; i < count; ++i)
+    d.digits = d.digits * 10 + static_cast<std::uint64_t>(all.digit[i] - '0');
+  return next >= '5' ? neighbour(d, 1) : d;
+}
+
+// The double that the decimal reads back as (strtod rounds exactly, ties to even).
+double valueOf(const Decimal& d) {
+  char text[40];
+  char* end = std::to_chars(text, text + sizeof text - 1, d.digits).ptr;
+  *end++ = 'e';
+  end = std::to_chars(end, text + sizeof text - 1, d.exponent - d.count + 1).ptr;
+  *end = '\0';
+  return std::strtod(text, nullptr);
+}
+
 // A decimal of `count` digits that reads back as `magnitude`, the nearest one when there are two;
 // digits == 0 when there is none. Only the two decimals on either side of `magnitude` can qualify:
 // the nearest, or, when it reads back wrong, the one on the other side (the rounding interval of
 // a power of two is wider above it than below).
-Decimal readsBackWith(double magnitude, int count) {
-  const Decimal nearest = roundedTo(magnitude, count);
+Decimal readsBackWith(double magnitude, const Digits17& all, int count) {
+  const Decimal nearest = roundedTo(magnitude, all, count);
   const double back = valueOf(nearest);
   if (back == magnitude) return nearest;
   const Decimal other = neighbour(nearest, back < magnitude ? 1 : -1);
@@ -86,22 +111,33 @@ Decimal readsBackWith(double magnitude, int count) {
 }
 
 // The fewest significant digits that read back as `magnitude` (finite, > 0). Whether some decimal
-// of n digits reads back is monotone in n (one of n digits is one of n + 1 with a trailing zero),
-// so the count is found by bisection.
+// of n digits reads back is monotone in n (one of n digits is one of n + 1 with a trailing zero).
+// Most doubles need 16 or 17 digits, so those two counts are tried first, then the rest bisected.
 Decimal shortestDecimal(double magnitude) {
+  Digits17 all;
+  const Decimal full = printedDecimal(magnitude, kMaxDigits, all.digit);
+  all.exponent = full.exponent;
+  Decimal best = full;
+  int high = kMaxDigits;  // the fewest digits known to read back
+  for (const int count : {kMaxDigits - 1, kMaxDigits - 2}) {
+    const Decimal d = readsBackWith(magnitude, all, count);
+    if (d.count == 0) return best;
+    best = d;
+    high = count;
+  }
   int low = 1;
-  int high = kMaxDigits;
   while (low < high) {
     const int middle = (low + high) / 2;
-    if (readsBackWith(magnitude, middle).count != 0) {
+    const Decimal d = readsBackWith(magnitude, all, middle);
+    if (d.count != 0) {
+      best = d;
       high = middle;
     } else {
       low = middle + 1;
     }
   }
-  const Decimal d = readsBackWith(magnitude, low);
-  assert(d.count == low);
-  return d;
+  assert(best.count == low);
+  return best;
 }
 
 bool isDigit(char c) {
