@@ -28,7 +28,11 @@ Obb3 Obb3::fromQuaternion(const Eigen::Vector3d& center, const Eigen::Quaternion
   // Divide by the largest component first so that squaring cannot overflow or underflow; scaling q
   // by a power of two then leaves every rounding, and hence the box, unchanged.
   const Eigen::Vector4d s = raw / scale;
-  const Eigen::Vector4d u = s / s.norm();
+  // The sum written out, not Eigen's norm(): Eigen sums in the order of its vector packets, here
+  // (x^2 + z^2) + (y^2 + w^2) with SSE2 and another order without SIMD (the WebAssembly build),
+  // which rounds differently. This is the SSE2 order, so the native boxes keep their bits.
+  const double length = std::sqrt((s[0] * s[0] + s[2] * s[2]) + (s[1] * s[1] + s[3] * s[3]));
+  const Eigen::Vector4d u = s / length;
   const double x = u[0], y = u[1], z = u[2], w = u[3];
   Eigen::Matrix3d m;
   m << 1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y),
@@ -47,7 +51,12 @@ void Obb3::setRotation(const Eigen::Matrix3d& m) {
 }
 
 Aabb3 Obb3::aabb() const {
-  const Eigen::Vector3d r = rotation_.cwiseAbs() * half;
+  // Each row's sum written out, left to right (see dot3 below for why not Eigen's product).
+  const Eigen::Matrix3d& m = rotation_;
+  Eigen::Vector3d r;
+  for (int k = 0; k < 3; ++k) {
+    r[k] = std::abs(m(k, 0)) * half[0] + std::abs(m(k, 1)) * half[1] + std::abs(m(k, 2)) * half[2];
+  }
   Aabb3 box{center - r, center + r};
   // One ulp outwards so that rounding can never cut off a corner of the box.
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -146,8 +155,16 @@ struct Pose3 {
   [[nodiscard]] double face(int k) const { return k < 3 ? lane(face_a, k) : face_b[k - 3]; }
 };
 
+// u . v left to right. Eigen's dot(), norm() and products of 3-vectors sum in the order of its
+// vector packets, left to right with SSE2 but x + (y + z) without SIMD (the WebAssembly build):
+// the 3D results are the same bits on every platform only with the sums written out.
 [[gnu::always_inline]] inline double dot3(const double* u, const double* v) {
   return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+// Column k of the box's rotation, for dot3.
+const double* columnOf(const Obb3& box, int k) {
+  return box.rotation().data() + 3 * k;  // column-major
 }
 
 // Calls f(std::integral_constant<int, K>{}) for K = 0, ..., N - 1: compile-time indices, so every
@@ -267,14 +284,15 @@ bool edgeGap(const Obb3& a, const Obb3& b, const Eigen::Vector3d& d, int i, int 
   if (m == 0.0) return false;
   // Rescale so the largest component is 1: no underflow in the norm even at tiny angles.
   axis = n / m;
-  const double len = axis.norm();
+  const double* u = axis.data();
+  const double len = std::sqrt(dot3(u, u));
   // a_i . axis and b_j . axis are exactly zero for the exact cross product; dropping them is exact.
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-  const double ra = a.half[i1] * std::abs(axis.dot(a.rotation().col(i1))) +
-                    a.half[i2] * std::abs(axis.dot(a.rotation().col(i2)));
-  const double rb = b.half[j1] * std::abs(axis.dot(b.rotation().col(j1))) +
-                    b.half[j2] * std::abs(axis.dot(b.rotation().col(j2)));
-  gap = (std::abs(axis.dot(d)) - ra - rb) / len;
+  const double ra = a.half[i1] * std::abs(dot3(u, columnOf(a, i1))) +
+                    a.half[i2] * std::abs(dot3(u, columnOf(a, i2)));
+  const double rb = b.half[j1] * std::abs(dot3(u, columnOf(b, j1))) +
+                    b.half[j2] * std::abs(dot3(u, columnOf(b, j2)));
+  gap = (std::abs(dot3(u, d.data())) - ra - rb) / len;
   axis /= len;
   return true;
 }
@@ -390,7 +408,7 @@ namespace {
       if (!edgeGap(a, b, p.d, e / 3, e % 3, ge, axis) || !(ge > r.separation)) continue;
       r.separation = ge;
       r.axis_index = 6 + e;
-      r.normal = axis.dot(p.d) < 0.0 ? Eigen::Vector3d(-axis) : axis;
+      r.normal = dot3(axis.data(), p.d.data()) < 0.0 ? Eigen::Vector3d(-axis) : axis;
       fast_winner = false;
       accurate_winner = true;
     }

@@ -4,6 +4,7 @@
 /// stored copy), so both give it bit for bit alike.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 
 #include "geometry/bit_cast.hpp"
@@ -22,6 +23,14 @@ namespace cardemo::obb3_detail {
   return out;
 }
 
+/// v / |v| (v itself when zero) with |v|^2 summed left to right, as Eigen's normalized() does
+/// with SSE2; without SIMD (the WebAssembly build) Eigen sums x + (y + z), which rounds
+/// differently, so the sum is written out.
+inline Eigen::Vector3d unitOrZero(const Eigen::Vector3d& v) {
+  const double length2 = v.x() * v.x() + v.y() * v.y() + v.z() * v.z();
+  return length2 > 0.0 ? Eigen::Vector3d(v / std::sqrt(length2)) : v;
+}
+
 /// The world-frame unit axis of fast edge axis 6 + 3i + j, pointing from A towards B. Pose: any
 /// type with r(k, j) = a_k . b_j and tk(k) = a_k . d (obb3.cpp's Pose3, or a kernel's stored pose).
 template <class Pose>
@@ -34,7 +43,7 @@ Eigen::Vector3d fastEdgeNormal(const Obb3& a, const Pose& p, int axis) {
   const unsigned e = static_cast<unsigned>(axis - 6), j = kJ[e], i1 = kI1[e], i2 = kI2[e];
   const Eigen::Vector3d n = a.rotation().col(i2) * p.r(i1, j) - a.rotation().col(i1) * p.r(i2, j);
   const double along = p.tk(i2) * p.r(i1, j) - p.tk(i1) * p.r(i2, j);
-  return negatedIf(along < 0.0, n.normalized());
+  return negatedIf(along < 0.0, unitOrZero(n));
 }
 
 /// The normal of the winning axis, pointing from A towards B: a fast edge axis, or a stored column
