@@ -3,6 +3,7 @@
 /// chosen, stores its exit status (0 ok, 1 a check failed, 2 bad input) in `exit_code`.
 
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace cardemo::app {
 
@@ -11,6 +12,11 @@ void addReplayCommand(CLI::App& app, int& exit_code);
 
 /// `cardemo collide PAIRS [--dim 2|3]`.
 void addCollideCommand(CLI::App& app, int& exit_code);
+
+/// `cardemo NAME ...` in a build without it: hidden from --help; says that it needs `needs` and
+/// exits 2.
+void addUnavailableCommand(CLI::App& app, const std::string& name, const std::string& needs,
+                           int& exit_code);
 
 #ifdef CARDEMO_HAVE_SDL
 /// `cardemo play [SCENE] [--record FILE] [--replay FILE] [--json FILE]`: the game in a window.

@@ -20,10 +20,18 @@ int run(int argc, char** argv) {
   cardemo::app::addCompareCommand(app, exit_code);
   cardemo::app::addCompareSweepCommand(app, exit_code);
   cardemo::app::addCompareWorldCommand(app, exit_code);
+#else
+  for (const char* name : {"compare", "compare-sweep", "compare-world"}) {
+    cardemo::app::addUnavailableCommand(app, name, "the comparison library: Box2D 2.4 and GMP",
+                                        exit_code);
+  }
 #endif
 #ifdef CARDEMO_HAVE_SDL
   cardemo::app::addPlayCommand(app, exit_code);
   cardemo::app::addRenderCommand(app, exit_code);
+#else
+  cardemo::app::addUnavailableCommand(app, "play", "SDL2: a window", exit_code);
+  cardemo::app::addUnavailableCommand(app, "render", "SDL2 and SDL2_image: PNG output", exit_code);
 #endif
   try {
     app.parse(argc, argv);
