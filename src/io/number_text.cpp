@@ -1,6 +1,7 @@
 #include "io/number_text.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <charconv>
 #include <cmath>
@@ -8,6 +9,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
+
+#include "geometry/bit_cast.hpp"
 
 // snprintf and strtod follow LC_NUMERIC; cardemo never calls setlocale, so they run in the "C"
 // locale, with '.' as the decimal point, as std::to_chars and std::from_chars always do.
@@ -98,16 +102,83 @@ double valueOf(const Decimal& d) {
   return std::strtod(text, nullptr);
 }
 
+__extension__ using Wide = unsigned __int128;
+
+// 5^k for k <= kMaxFive: with at most 17 digits (< 2^57) times 5^27 (< 2^63), under 2^120.
+constexpr int kMaxFive = 27;
+constexpr auto kPowersOfFive = [] {
+  std::array<std::uint64_t, kMaxFive + 1> p{};
+  p[0] = 1;
+  for (int k = 1; k <= kMaxFive; ++k)
+    p[static_cast<std::size_t>(k)] = p[static_cast<std::size_t>(k - 1)] * 5;
+  return p;
+}();
+
+int bitWidth(Wide v) {
+  const auto high = static_cast<std::uint64_t>(v >> 64);
+  const auto low = static_cast<std::uint64_t>(v);
+  if (high != 0) return 128 - __builtin_clzll(high);
+  return low != 0 ? 64 - __builtin_clzll(low) : 0;
+}
+
+// The sign of d - n * 2^t, exactly: both sides as integers times powers of 5 and 2 (10^q is
+// 5^q 2^q), moved to the side where the powers are positive; nullopt when that needs more than
+// 128 bits (magnitudes outside about 1e-10..1e27), left to strtod.
+std::optional<int> compareExactly(const Decimal& d, std::uint64_t n, int t) {
+  const int q = d.exponent - d.count + 1;
+  const int five_left = std::max(q, 0);
+  const int five_right = std::max(-q, 0);
+  if (five_left > kMaxFive || five_right > kMaxFive) return std::nullopt;
+  Wide left = Wide{d.digits} * kPowersOfFive[static_cast<std::size_t>(five_left)];
+  Wide right = Wide{n} * kPowersOfFive[static_cast<std::size_t>(five_right)];
+  const int shift = q - t;  // 2^q on the left against 2^t on the right
+  Wide& shifted = shift > 0 ? left : right;
+  const int by = std::abs(shift);
+  if (by > 0) {
+    if (bitWidth(shifted) + by > 127) return std::nullopt;
+    shifted <<= by;
+  }
+  return left < right ? -1 : (left > right ? 1 : 0);
+}
+
+// Where a decimal falls against a double: below the values that round to it, among them, above.
+enum class Side { kBelow, kOn, kAbove };
+
+// Side of `d` against `magnitude` (finite, > 0) as strtod would round `d`: exact integer arithmetic
+// where 128 bits suffice (strtod is slow, in the browser build above all), strtod itself elsewhere.
+Side sideOf(const Decimal& d, double magnitude) {
+  const auto bits = bitCast<std::uint64_t>(magnitude);
+  const int biased = static_cast<int>(bits >> 52);
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t{1} << 52);
+  const int e = biased == 0 ? -1074 : biased - 1075;  // magnitude = m * 2^e
+  // In units of 2^(e-2) the double is 4m, and the values that round to it reach 2 units up and 2
+  // down, or 1 down at a power of two (its lower neighbour is half as far); the ends round to it
+  // when m is even (ties to even).
+  const bool even = (m & 1) == 0;
+  const std::uint64_t lower = 4 * m - (fraction == 0 && biased > 1 ? 1 : 2);
+  const std::uint64_t upper = 4 * m + 2;
+  const std::optional<int> low = compareExactly(d, lower, e - 2);
+  const std::optional<int> high = compareExactly(d, upper, e - 2);
+  if (!low || !high) {
+    const double back = valueOf(d);
+    return back == magnitude ? Side::kOn : (back < magnitude ? Side::kBelow : Side::kAbove);
+  }
+  if (*low < 0 || (*low == 0 && !even)) return Side::kBelow;
+  if (*high > 0 || (*high == 0 && !even)) return Side::kAbove;
+  return Side::kOn;
+}
+
 // A decimal of `count` digits that reads back as `magnitude`, the nearest one when there are two;
 // digits == 0 when there is none. Only the two decimals on either side of `magnitude` can qualify:
 // the nearest, or, when it reads back wrong, the one on the other side (the rounding interval of
 // a power of two is wider above it than below).
 Decimal readsBackWith(double magnitude, const Digits17& all, int count) {
   const Decimal nearest = roundedTo(magnitude, all, count);
-  const double back = valueOf(nearest);
-  if (back == magnitude) return nearest;
-  const Decimal other = neighbour(nearest, back < magnitude ? 1 : -1);
-  return valueOf(other) == magnitude ? other : Decimal{};
+  const Side side = sideOf(nearest, magnitude);
+  if (side == Side::kOn) return nearest;
+  const Decimal other = neighbour(nearest, side == Side::kBelow ? 1 : -1);
+  return sideOf(other, magnitude) == Side::kOn ? other : Decimal{};
 }
 
 // The fewest significant digits that read back as `magnitude` (finite, > 0). Whether some decimal

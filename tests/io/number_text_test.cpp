@@ -126,6 +126,28 @@ TEST(NumberText, ShortestMatchesToCharsOnRandomDoubles) {
   }
 }
 
+TEST(NumberText, ShortestMatchesToCharsOnRoundingTies) {
+  // Short decimals that lie exactly halfway between two doubles: n * 10^k = (n 5^k) 2^k with
+  // n 5^k odd and in [2^53, 2^54) is an odd multiple of half the ulp there (2^(k+1)). It reads
+  // back as the neighbour whose significand is even, so the shortest text of the other one needs
+  // more digits.
+  int ties = 0;
+  for (const int k : {8, 10, 12, 15, 18, 20, 21}) {
+    const double five = std::pow(5.0, k);  // exact: 5^21 < 2^53
+    const auto first = static_cast<std::int64_t>(std::ceil(0x1p53 / five)) | 1;
+    for (std::int64_t n = first; static_cast<double>(n) * five < 0x1p54 && n < first + 1000;
+         n += 2) {
+      const std::string text = std::to_string(n) + "e" + std::to_string(k);
+      const double even = std::strtod(text.c_str(), nullptr);
+      for (const double v : {even, std::nextafter(even, 0.0), std::nextafter(even, 1e300)}) {
+        ASSERT_EQ(numberText(v), standardShortest(v)) << std::hexfloat << v << " near " << text;
+      }
+      ++ties;
+    }
+  }
+  EXPECT_GT(ties, 2000);
+}
+
 TEST(NumberText, NonFinite) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
