@@ -6,8 +6,11 @@
 #      on every batch path);
 #   2. determinism: the golden hashes again from `cardemo` alone in GCC Debug and GCC Release
 #      (scripts/check-determinism.sh; the Clang hashes are the sanitizer tree's golden.* tests),
-#      built beside stage 1's tests, as is the sanitizer tree of stage 3;
-#   3. Clang ASan+UBSan, with the fuzz targets in the same tree: the window tests, and beside them
+#      built beside stage 1's tests, as is the sanitizer tree of stage 4;
+#   3. WebAssembly: the command line built with Debian's emscripten (scripts/web.sh, which installs
+#      it) and checked under node against stage 1's cardemo, byte for byte (scripts/web-test.sh:
+#      every golden replay's summary, hash, JSON and trace, bad input, pair queries);
+#   4. Clang ASan+UBSan, with the fuzz targets in the same tree: the window tests, and beside them
 #      at low priority every other CTest test, then every fuzz target for CARDEMO_FUZZ_SECONDS
 #      (default 10 here: each target replays its corpus and mutates beyond it; scripts/fuzz.sh
 #      alone runs 60 s or more) (scripts/ci-sanitize.sh).
@@ -17,8 +20,9 @@
 # Usage: scripts/test.sh [--quick]
 #   --quick   stage 1 only, without the slow labels (valgrind, stress, the window tests under
 #             Xvfb): the edit-test loop. Incremental: reuses the build folder.
-# Environment: CARDEMO_BUILD_DIR (default build-test; the other stages use BUILD-determinism and
-# BUILD-sanitize), CARDEMO_CTEST_ARGS (extra ctest arguments for stage 1), CARDEMO_FUZZ_SECONDS.
+# Environment: CARDEMO_BUILD_DIR (default build-test; the other stages use BUILD-determinism,
+# BUILD-web and BUILD-sanitize), CARDEMO_CTEST_ARGS (extra ctest arguments for stage 1),
+# CARDEMO_FUZZ_SECONDS.
 # ccache is used for every build when it is installed (scripts/packages.txt installs it).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -77,6 +81,12 @@ cat "$background"
 stage_end
 [ "$suite" -eq 0 ] || { echo "the GCC suite failed" >&2; exit 1; }
 [ "$built" -eq 0 ] || { echo "the determinism check or the sanitizer build failed" >&2; exit 1; }
+
+stage_begin "WebAssembly: the command line under node against the GCC build"
+CARDEMO_WEB_BUILD_DIR="$build-web" "$root/scripts/web.sh"
+stage_step "build"
+"$root/scripts/web-test.sh" "$build/cardemo" "$build-web/cardemo.js"
+stage_end
 
 stage_begin "Clang ASan+UBSan: every CTest test, then every fuzz target"
 CARDEMO_SANITIZE_BUILD_DIR="$sanitize" CARDEMO_FUZZ_SECONDS="${CARDEMO_FUZZ_SECONDS:-10}" \
