@@ -3,8 +3,8 @@
 # as `node cardemo.js ARGS` and as `NATIVE ARGS`, each in an empty folder of its own with the same
 # stdin, and requires the same stdout, stderr, exit status and files written, byte for byte:
 #   - every golden replay in assets/replays: the summary (exit 0: its expectations, hash included,
-#     are met), --json -, --trace FILE, --print-expect and the rotation-proof broad phase's
-#     --json; two replays with the other fast-motion schemes;
+#     are met), --json - and --trace FILE in one run, --print-expect, and the rotation-proof broad
+#     phase's --json; two replays with the other fast-motion schemes;
 #   - bad input: a malformed replay, scenes with bad JSON, an unknown key, a number out of range
 #     and deep nesting, a missing file, usage errors: one `FILE:LINE: ...` line, exit 2;
 #   - collide: assets/pairs (2D and 3D, from a file and from stdin), seeded random rows with
@@ -71,10 +71,9 @@ replays=()
 for replay in "$root"/assets/replays/*.replay; do
   name=$(basename "$replay" .replay)
   replays+=("$name")
-  same "replay.$name" /dev/null replay "$replay"
+  # The summary (with its expectations) on stderr, the JSON on stdout, the trace in a file.
+  same "replay.$name" /dev/null replay "$replay" --json - --trace trace.csv
   status "replay.$name" 0
-  # The summary on stderr, the JSON on stdout, the trace in a file.
-  same "data.$name" /dev/null replay "$replay" --json - --trace trace.csv
   same "expect.$name" /dev/null replay "$replay" --print-expect
   same "proof.$name" /dev/null replay "$replay" --json - --broadphase-box rotation-proof
 done
@@ -178,7 +177,7 @@ for name in "${names[@]}"; do
 done
 for name in "${replays[@]}"; do
   checks=$((checks + 1))
-  [ -s "$work/web/data.$name/files/trace.csv" ] || fail "data.$name: no trace written"
+  [ -s "$work/web/replay.$name/files/trace.csv" ] || fail "replay.$name: no trace written"
 done
 for check in "${status_checks[@]}"; do
   name=${check%:*} code=${check##*:}
