@@ -189,17 +189,19 @@ done
 for name in "${bad_checks[@]}"; do
   err="$work/web/$name/stderr"
   checks=$((checks + 1))
-  [ "$(<"$work/web/$name/status")" = 2 ] && [ "$(wc -l <"$err")" -eq 1 ] &&
-    grep -Eq '^[^:]+:[0-9]+: .' "$err" ||
+  if ! { [ "$(<"$work/web/$name/status")" = 2 ] && [ "$(wc -l <"$err")" -eq 1 ] &&
+    grep -Eq '^[^:]+:[0-9]+: .' "$err"; }; then
     fail "$name: not exit 2 with one FILE:LINE line: $(head -c 300 "$err")"
+  fi
 done
 
 # The web build alone: what it leaves out.
 for sub in compare render play; do
   err=$(node "$web" "$sub" "$root/assets/replays/demo.replay" 2>&1 >/dev/null) && code=0 || code=$?
   checks=$((checks + 1))
-  [ "$code" -eq 2 ] && [[ "$err" == *"not available in this build"* ]] ||
+  if [ "$code" -ne 2 ] || [[ "$err" != *"not available in this build"* ]]; then
     fail "$sub: expected 'not available in this build' and exit 2, got $code: $err"
+  fi
 done
 help=$(node "$web" --help)
 checks=$((checks + 1))
