@@ -3,8 +3,7 @@
 # as `node cardemo.js ARGS` and as `NATIVE ARGS`, each in an empty folder of its own with the same
 # stdin, and requires the same stdout, stderr, exit status and files written, byte for byte:
 #   - every golden replay in assets/replays: the summary (exit 0: its expectations, hash included,
-#     are met), --json - and --trace FILE in one run, --print-expect, and the rotation-proof broad
-#     phase's --json; two replays with the other fast-motion schemes;
+#     are met), --json - and --trace FILE in one run, and --print-expect;
 #   - bad input: a malformed replay, scenes with bad JSON, an unknown key, a number out of range
 #     and deep nesting, a missing file, usage errors: one `FILE:LINE: ...` line, exit 2;
 #   - collide: assets/pairs (2D and 3D, from a file and from stdin), seeded random rows with
@@ -75,15 +74,6 @@ for replay in "$root"/assets/replays/*.replay; do
   same "replay.$name" /dev/null replay "$replay" --json - --trace trace.csv
   status "replay.$name" 0
   same "expect.$name" /dev/null replay "$replay" --print-expect
-  same "proof.$name" /dev/null replay "$replay" --json - --broadphase-box rotation-proof
-done
-
-# The other fast-motion schemes, on the replays that exercise them.
-for replay in demo highspeed; do
-  for scheme in substepped discrete; do
-    same "scheme.$replay.$scheme" /dev/null replay "$root/assets/replays/$replay.replay" --json - \
-      --collision "$scheme"
-  done
 done
 
 # Bad input.
