@@ -7,9 +7,12 @@
 #   2. determinism: the golden hashes again from `cardemo` alone in GCC Debug and GCC Release
 #      (scripts/check-determinism.sh; the Clang hashes are the sanitizer tree's golden.* tests),
 #      built beside stage 1's tests, as is the sanitizer tree of stage 4;
-#   3. WebAssembly: the command line built with Debian's emscripten (scripts/web.sh, which installs
-#      it) and checked under node against stage 1's cardemo, byte for byte (scripts/web-test.sh:
-#      every golden replay's summary, hash, JSON and trace, bad input, pair queries);
+#   3. WebAssembly: the command line and the page built with Debian's emscripten (scripts/web.sh,
+#      which installs it, chromium and puppeteer-core); the command line checked under node against
+#      stage 1's cardemo, byte for byte (scripts/web-test.sh: every golden replay's summary, hash,
+#      JSON and trace, bad input, pair queries); the page in headless chromium
+#      (scripts/web-page-test.sh: every replay's native hash, level 1 driven by keys to PARKED and
+#      its downloaded recording replayed natively, a malformed replay's FILE:LINE, a screenshot);
 #   4. Clang ASan+UBSan, with the fuzz targets in the same tree: the window tests, and beside them
 #      at low priority every other CTest test, then every fuzz target for CARDEMO_FUZZ_SECONDS
 #      (default 10 here: each target replays its corpus and mutates beyond it; scripts/fuzz.sh
@@ -82,10 +85,12 @@ stage_end
 [ "$suite" -eq 0 ] || { echo "the GCC suite failed" >&2; exit 1; }
 [ "$built" -eq 0 ] || { echo "the determinism check or the sanitizer build failed" >&2; exit 1; }
 
-stage_begin "WebAssembly: the command line under node against the GCC build"
+stage_begin "WebAssembly: the command line under node and the page in chromium against the GCC build"
 CARDEMO_WEB_BUILD_DIR="$build-web" "$root/scripts/web.sh"
 stage_step "build"
 "$root/scripts/web-test.sh" "$build/cardemo" "$build-web/cardemo.js"
+stage_step "node"
+"$root/scripts/web-page-test.sh" "$build/cardemo" "$build-web"
 stage_end
 
 stage_begin "Clang ASan+UBSan: every CTest test, then every fuzz target"

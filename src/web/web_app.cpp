@@ -59,9 +59,7 @@ void WebApp::watch(const std::string& path, bool to_the_end) {
   Parsed<Scene> scene =
       replay.ok() ? loadReplayScene(replay.value(), path, "") : Parsed<Scene>(replay.error());
   if (!scene.ok()) {
-    status_ = scene.error().toString();
-    cardemo_page_status(status_.c_str());
-    cardemo_page_log(status_.c_str());
+    showError(scene.error().toString());
     return;
   }
   if (screen_) leaveLevel();
@@ -76,6 +74,7 @@ void WebApp::watch(const std::string& path, bool to_the_end) {
   config.muted = muted_;
   config.viewport = canvas_.size();
   to_the_end_ = to_the_end;
+  error_.clear();
   screen_ = std::make_unique<PlayScreen>(std::move(config));
   was_over_ = false;
   showWorld(screen_->session().world());
@@ -127,6 +126,11 @@ void WebApp::pickerFrame() {
     return;
   }
   const int row = picker_->selected();
+  if (!error_.empty() && row == error_row_) {
+    drawScenePicker(canvas_, picker_->rows(), picker_->selected(), picker_->progress());
+    return;
+  }
+  error_.clear();
   auto found = picker_status_.find(row);
   if (found == picker_status_.end()) {
     // The status names the selected scene's frame 0, so it is never stale.
@@ -156,13 +160,13 @@ void WebApp::startLevel() {
   base.viewport = canvas_.size();
   Parsed<PlayScreenConfig> config = flow_.levelConfig(base);
   if (!config.ok()) {
-    status_ = config.error().toString();
-    cardemo_page_status(status_.c_str());
     flow_.levelEnded({2, LevelExit::kPicker, 1});
     showPicker();
+    showError(config.error().toString());
     return;
   }
   to_the_end_ = false;
+  error_.clear();
   actions_.clear();
   screen_ = std::make_unique<PlayScreen>(std::move(config).value());
   was_over_ = false;
@@ -216,6 +220,14 @@ void WebApp::leaveLevel() {
 
 void WebApp::say(const std::vector<std::string>& lines) {
   for (const std::string& line : lines) cardemo_page_log(line.c_str());
+}
+
+void WebApp::showError(std::string error) {
+  error_ = std::move(error);
+  error_row_ = picker_ ? picker_->selected() : 0;
+  status_ = error_;
+  cardemo_page_status(status_.c_str());
+  cardemo_page_log(status_.c_str());
 }
 
 void WebApp::showWorld(const World& world) {

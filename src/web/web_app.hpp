@@ -47,6 +47,7 @@ class WebApp {
   void levelFrame(double elapsed_seconds);
   void leaveLevel();
   void say(const std::vector<std::string>& lines);
+  void showError(std::string error);
   void showWorld(const World& world);
   void showOutcome();
   void offerRecordings();
@@ -63,6 +64,8 @@ class WebApp {
   std::vector<PickerAction> picker_actions_;
   std::map<int, std::string> picker_status_;  // row -> status of its scene at frame 0
   std::string status_;
+  std::string error_;  // a bad file's FILE:LINE text, shown until the picker's selection moves
+  int error_row_ = 0;
   std::string outcome_;
   bool to_the_end_ = false;
   bool muted_ = false;

@@ -191,6 +191,8 @@ async function malformed(browser) {
     const page = await open(browser, `?replay=${name}`);
     check(await waitText(page, "status", want.stderr), `#status shows "${want.stderr}"`);
     check(await waitText(page, "outcome", "picker"), "the picker stays");
+    await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
+    check((await text(page, "status")) === want.stderr, "and #status keeps the error");
     await page.keyboard.press("Enter");
     check(await waitText(page, "outcome", "driving"), "and Enter still starts a level");
     await page.close();
