@@ -99,6 +99,7 @@ void WebApp::blur() {
 }
 
 void WebApp::frame(double elapsed_seconds) {
+  parts_ = {};
   canvas_.resize();
   if (screen_) {
     levelFrame(elapsed_seconds);
@@ -107,7 +108,9 @@ void WebApp::frame(double elapsed_seconds) {
   } else {
     startLevel();
   }
+  const double flush_start = emscripten_get_now();
   canvas_.flush();
+  parts_.flush = emscripten_get_now() - flush_start;
 }
 
 void WebApp::showPicker() {
@@ -181,6 +184,7 @@ void WebApp::startLevel() {
 void WebApp::levelFrame(double elapsed_seconds) {
   const std::vector<PlayAction> actions = std::exchange(actions_, {});
   PlayInput input{actions, {}, elapsed_seconds, canvas_.size()};
+  const double update_start = emscripten_get_now();
   const PlayFrame* frame = &screen_->frame(input);
   if (to_the_end_) {
     // As fast as the page can: whole frames of the most steps each, for at most 50 ms a frame.
@@ -192,6 +196,7 @@ void WebApp::levelFrame(double elapsed_seconds) {
     }
     if (!screen_->session().playingBack() || screen_->session().ended()) to_the_end_ = false;
   }
+  parts_.update = emscripten_get_now() - update_start;
   say(screen_->takeMessages());
   offerRecordings();
   if (frame->exit != LevelExit::kStay) {
@@ -202,7 +207,9 @@ void WebApp::levelFrame(double elapsed_seconds) {
   muted_ = frame->muted;
   audio_.apply(frame->sound, frame->muted);
   if (frame->chime) audio_.playChime(frame->muted);
+  const double draw_start = emscripten_get_now();
   drawPlayFrame(canvas_, *frame);
+  parts_.draw = emscripten_get_now() - draw_start;
   showWorld(*frame->world);
   showOutcome();
 }

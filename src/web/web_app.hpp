@@ -24,6 +24,13 @@ struct WebPaths {
   std::string recording = "/assets/replays/web.replay";         ///< First attempt's recording.
 };
 
+/// Where the last frame's time went, in milliseconds (for the page's benchmark).
+struct FrameParts {
+  double update = 0.0;  ///< PlayScreen's step: input, simulation, camera, effects, sound.
+  double draw = 0.0;    ///< Building the frame's canvas commands (C++).
+  double flush = 0.0;   ///< The page replaying them on the 2D context (JavaScript).
+};
+
 /// The game in the page.
 class WebApp {
  public:
@@ -39,6 +46,8 @@ class WebApp {
   void blur();
   /// One drawn frame, `elapsed_seconds` after the previous one.
   void frame(double elapsed_seconds);
+  /// Where the last frame's time went.
+  [[nodiscard]] const FrameParts& lastFrameParts() const { return parts_; }
 
  private:
   void showPicker();
@@ -70,6 +79,7 @@ class WebApp {
   bool to_the_end_ = false;
   bool muted_ = false;
   bool was_over_ = false;
+  FrameParts parts_;
 };
 
 }  // namespace cardemo

@@ -11,7 +11,9 @@
 #include "web/web_keys.hpp"
 
 // clang-format off
-EM_JS(void, cardemo_frame_time, (double ms), { Module.page.frameTime(ms); });
+EM_JS(void, cardemo_frame_time, (double ms, double update, double draw, double flush), {
+  Module.page.frameTime(ms, update, draw, flush);
+});
 // clang-format on
 
 namespace {
@@ -46,7 +48,8 @@ void frame() {
   last_frame_ms = now;
   app->frame(elapsed);
   // Update plus draw (the batch handed to the canvas), for the page's frame-time figures.
-  cardemo_frame_time(emscripten_get_now() - now);
+  const cardemo::FrameParts& parts = app->lastFrameParts();
+  cardemo_frame_time(emscripten_get_now() - now, parts.update, parts.draw, parts.flush);
 }
 
 }  // namespace

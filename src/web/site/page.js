@@ -197,10 +197,14 @@ const page = (() => {
     logElement.textContent += `${line}\n`;
   }
 
-  // Frame times (update + draw, ms), kept for the benchmark (scripts/web-bench.js).
+  // Frame times (update + draw, ms) and where they went (update, C++ draw, the 2D context's
+  // replay of the commands), kept for the benchmark (tests/web/page-bench.js).
   const frameTimes = [];
-  function frameTime(ms) {
-    if (frameTimes.length < 100000) frameTimes.push(ms);
+  const frameParts = [];
+  function frameTime(ms, update, draw, flush) {
+    if (frameTimes.length >= 100000) return;
+    frameTimes.push(ms);
+    frameParts.push([update, draw, flush]);
   }
 
   // Files. A path in the wasm file system is the page-relative path the user named, so that
@@ -320,6 +324,8 @@ const page = (() => {
     log,
     frameTime,
     frameTimes,
+    frameParts,
+    fetchReplay,
     offerRecording,
     recordings,
     saveBestScores,
