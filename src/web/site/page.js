@@ -20,12 +20,12 @@ const page = (() => {
     image.src = `assets/sprites/${name}.png`;
     return image;
   });
-  const tinted = new Map(); // "id,r,g,b" -> the sprite multiplied by that colour
+  const tinted = new Map(); // id and RGB, packed -> the sprite multiplied by that colour
 
   function tintedSprite(id, r, g, b) {
     const image = sprites[id];
     if (r === 255 && g === 255 && b === 255) return image;
-    const key = `${id},${r},${g},${b}`;
+    const key = ((id * 256 + r) * 256 + g) * 256 + b;
     let out = tinted.get(key);
     if (out) return out;
     out = document.createElement("canvas");
@@ -56,30 +56,58 @@ const page = (() => {
     return w;
   }
 
+  // CSS colours by packed RGBA: a colour string is built and parsed once, not once a command.
+  const colours = new Map();
+  function cssColour(r, g, b, a) {
+    const key = ((r * 256 + g) * 256 + b) * 256 + a;
+    let css = colours.get(key);
+    if (css === undefined) {
+      css = `rgba(${r},${g},${b},${a / 255})`;
+      colours.set(key, css);
+    }
+    return css;
+  }
+
   // Replays WebCanvas's command list (web_canvas.cpp): each command is its code, an RGBA colour,
   // then clear: nothing; fill: n, n points; line: width, a, b; text: x, y, px, offset, length;
-  // image: id, centre, angle, width, height. Runs of opaque fills of one colour are one path.
+  // image: id, centre, angle, width, height. Runs of opaque fills of one colour are one path, and
+  // so are runs of opaque lines of one colour and width; the context's state (colours, width,
+  // font, alpha, transform) is set only when it changes.
   function drawCommands(c, texts) {
-    let fillStyle = null;
-    const endFill = () => {
-      if (fillStyle !== null) ctx.fill();
-      fillStyle = null;
+    let path = 0; // the open path: 0 none, 1 fills, 2 lines
+    let pathStyle = null;
+    let pathWidth = 0;
+    let fillStyle = null, strokeStyle = null, lineWidth = -1, fontPx = -1, alpha = 1;
+    let turned = false; // the transform is an image's, not the identity
+    const endPath = () => {
+      if (path === 1) ctx.fill();
+      else if (path === 2) ctx.stroke();
+      path = 0;
+    };
+    const plain = () => {
+      if (turned) ctx.setTransform(1, 0, 0, 1, 0, 0);
+      if (alpha !== 1) ctx.globalAlpha = 1;
+      turned = false;
+      alpha = 1;
     };
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.globalAlpha = 1;
+    ctx.textBaseline = "top";
     let i = 0;
     while (i < c.length) {
       const op = c[i];
       const a = c[i + 4];
-      const style = `rgba(${c[i + 1]},${c[i + 2]},${c[i + 3]},${a / 255})`;
+      const style = cssColour(c[i + 1], c[i + 2], c[i + 3], a);
       i += 5;
       if (op === 1) {
         const n = c[i++];
-        if (fillStyle !== style || a !== 255) {
-          endFill();
-          ctx.fillStyle = style;
+        if (path !== 1 || pathStyle !== style || a !== 255) {
+          endPath();
+          plain();
+          if (fillStyle !== style) ctx.fillStyle = fillStyle = style;
           ctx.beginPath();
-          fillStyle = style;
+          path = 1;
+          pathStyle = style;
         }
         ctx.moveTo(c[i], c[i + 1]);
         for (let k = 1; k < n; ++k) ctx.lineTo(c[i + 2 * k], c[i + 2 * k + 1]);
@@ -87,39 +115,52 @@ const page = (() => {
         i += 2 * n;
         continue;
       }
-      endFill();
-      if (op === 0) {
-        ctx.fillStyle = style;
-        ctx.fillRect(0, 0, canvas.width, canvas.height);
-      } else if (op === 2) {
-        ctx.strokeStyle = style;
-        ctx.lineWidth = c[i];
-        ctx.beginPath();
+      if (op === 2) {
+        const width = c[i];
+        if (path !== 2 || pathStyle !== style || pathWidth !== width || a !== 255) {
+          endPath();
+          plain();
+          if (strokeStyle !== style) ctx.strokeStyle = strokeStyle = style;
+          if (lineWidth !== width) ctx.lineWidth = lineWidth = width;
+          ctx.beginPath();
+          path = 2;
+          pathStyle = style;
+          pathWidth = width;
+        }
         ctx.moveTo(c[i + 1], c[i + 2]);
         ctx.lineTo(c[i + 3], c[i + 4]);
-        ctx.stroke();
         i += 5;
+        continue;
+      }
+      endPath();
+      if (op === 0) {
+        plain();
+        if (fillStyle !== style) ctx.fillStyle = fillStyle = style;
+        ctx.fillRect(0, 0, canvas.width, canvas.height);
       } else if (op === 3) {
-        ctx.fillStyle = style;
-        ctx.font = `${c[i + 2]}px ${font}`;
-        ctx.textBaseline = "top";
+        plain();
+        if (fillStyle !== style) ctx.fillStyle = fillStyle = style;
+        if (fontPx !== c[i + 2]) {
+          fontPx = c[i + 2];
+          ctx.font = `${fontPx}px ${font}`;
+        }
         ctx.fillText(decoder.decode(texts.subarray(c[i + 3], c[i + 3] + c[i + 4])), c[i], c[i + 1]);
         i += 5;
       } else if (op === 4) {
         const image = tintedSprite(c[i], c[i - 4], c[i - 3], c[i - 2]);
         const w = c[i + 4], h = c[i + 5];
-        ctx.globalAlpha = a / 255;
-        ctx.setTransform(1, 0, 0, 1, c[i + 1], c[i + 2]);
-        ctx.rotate(c[i + 3]);
+        const cos = Math.cos(c[i + 3]), sin = Math.sin(c[i + 3]);
+        if (alpha !== a / 255) ctx.globalAlpha = alpha = a / 255;
+        ctx.setTransform(cos, sin, -sin, cos, c[i + 1], c[i + 2]);
+        turned = true;
         ctx.drawImage(image, -w / 2, -h / 2, w, h);
-        ctx.setTransform(1, 0, 0, 1, 0, 0);
-        ctx.globalAlpha = 1;
         i += 6;
       } else {
         throw new Error(`unknown canvas command ${op}`);
       }
     }
-    endFill();
+    endPath();
+    plain();
   }
 
   // The canvas's pixels follow its size on the page.
