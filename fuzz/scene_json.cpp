@@ -1,7 +1,9 @@
 // Fuzz target: the scene JSON parser (src/io/scene_json), then a short simulation of what it
 // accepts. Properties: no crash, hang, leak or UB; an error names the file and a line inside the
 // input, in one printable line; an accepted scene satisfies every documented invariant and can be
-// simulated without producing NaN or infinity.
+// simulated without producing NaN or infinity. With simdjson, the fast reader and the
+// line-tracking reader agree: both reject the input, or both accept it with the same Scene bit
+// for bit, and parseScene (fast first) gives the line reader's error word for word.
 
 #include "io/scene_json.hpp"
 
@@ -11,8 +13,15 @@
 #include <set>
 #include <string>
 
+#include "../tests/support/scene_bits.hpp"
 #include "fuzz_check.hpp"
+#include "io/scene_json_lines.hpp"
 #include "sim/world.hpp"
+
+#if CARDEMO_WITH_SIMDJSON
+#include "io/padded_text.hpp"
+#include "io/scene_json_fast.hpp"
+#endif
 
 namespace cardemo::fuzz {
 namespace {
@@ -74,13 +83,41 @@ void simulate(Scene scene, std::string_view text) {
   static_cast<void>(world.stateHash());
 }
 
+// The fast reader against its slow twin, and parseScene against the line reader alone.
+void requireReadersAgree(std::string_view text, const Parsed<Scene>& slow) {
+#if CARDEMO_WITH_SIMDJSON
+  const std::optional<Scene> fast = parseSceneFast(PaddedText::copyOf(text), kFile);
+  // The message is built only on a disagreement: slow.error() exists only when slow failed.
+  if (fast.has_value() != slow.ok()) {
+    require(false,
+            fast ? "only the fast reader accepts; the line reader says " + slow.error().toString()
+                 : std::string("only the line reader accepts"));
+  }
+  if (fast) {
+    const std::string difference = testing::SceneBits::difference(*fast, slow.value());
+    require(difference.empty(), "the readers' scenes differ at " + difference);
+  }
+  const Parsed<Scene> both = parseScene(text, kFile);
+  require(both.ok() == slow.ok(), "parseScene and the line reader disagree");
+  if (!slow.ok()) {
+    require(both.error().toString() == slow.error().toString(),
+            "parseScene says " + both.error().toString() + ", the line reader " +
+                slow.error().toString());
+  }
+#else
+  static_cast<void>(text);
+  static_cast<void>(slow);
+#endif
+}
+
 }  // namespace
 }  // namespace cardemo::fuzz
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace cardemo;
   const std::string_view text = fuzz::asText(data, size);
-  Parsed<Scene> parsed = parseScene(text, fuzz::kFile);
+  Parsed<Scene> parsed = parseSceneWithLines(text, fuzz::kFile);
+  fuzz::requireReadersAgree(text, parsed);
   if (!parsed.ok()) {
     fuzz::requireGoodError(parsed.error(), text, fuzz::kFile);
     return 0;

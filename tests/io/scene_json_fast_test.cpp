@@ -86,6 +86,21 @@ TEST(SceneJsonFast, EveryBundledSceneReadsTheSameBothWays) {
   EXPECT_GE(scenes, 10);
 }
 
+TEST(SceneJsonFast, FuzzSeedsAreJudgedAlike) {
+  int seeds = 0;
+  const std::filesystem::path root =
+      std::filesystem::path(CARDEMO_SOURCE_DIR) / "fuzz/corpus/scene_json";
+  for (const auto& entry : std::filesystem::directory_iterator(root)) {
+    ++seeds;
+    bool accepted = false;
+    EXPECT_TRUE(readersAgree(slurp(entry.path()), &accepted)) << entry.path();
+    if (entry.path().filename().string().rfind("fast-", 0) == 0) {
+      EXPECT_TRUE(accepted) << entry.path();  // the fast reader's own seeds are valid scenes
+    }
+  }
+  EXPECT_GE(seeds, 16);
+}
+
 // --- named edge cases, each put into this scene in place of one token ---
 
 constexpr std::string_view kBase = R"({
