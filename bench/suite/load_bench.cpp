@@ -1,5 +1,7 @@
-// Loading: parse a generated 100,000-car scene file and build the World from it. Replay: headless
-// frames per second of the bundled replays (a fresh World per pass, as `cardemo replay` runs).
+// Loading: parse a generated 100,000-car scene file and build the World from it; the file alone
+// through loadScene (simdjson's fast reader when built with it) and through the line-tracking
+// reader that reads a file the fast one turns down. Replay: headless frames per second of the
+// bundled replays (a fresh World per pass, as `cardemo replay` runs).
 
 #include <benchmark/benchmark.h>
 #include <unistd.h>
@@ -12,6 +14,7 @@
 #include "io/replay_runner.hpp"
 #include "io/replay_text.hpp"
 #include "io/scene_json.hpp"
+#include "io/scene_json_lines.hpp"
 #include "sim/world.hpp"
 
 namespace cardemo::bench {
@@ -63,6 +66,17 @@ void registerLoadSize(std::size_t n) {
                                    benchmark::DoNotOptimize(scene.ok());
                                  }
                                })
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(
+      ("load/scene-lines/" + size + "/cardemo").c_str(),
+      [n](benchmark::State& s) {
+        const TempScene file(n);
+        for (auto _ : s) {
+          const Parsed<std::string> text = readInputFile(file.path(), kMaxSceneBytes);
+          const Parsed<Scene> scene = parseSceneWithLines(text.value(), file.path());
+          benchmark::DoNotOptimize(scene.ok());
+        }
+      })
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("load/world/" + size + "/cardemo").c_str(),
                                [n](benchmark::State& s) {
