@@ -4,6 +4,7 @@
 Deterministic (a fixed linear congruential generator), so the committed file can be checked:
     scripts/make_large_lot.py assets/scenes/large-lot.json          # write
     scripts/make_large_lot.py --check assets/scenes/large-lot.json  # exit 1 if it differs
+    scripts/make_large_lot.py --blocks 496 /tmp/lot100k.json        # 100,025 cars, 10.5 MB
 """
 import argparse
 import json
@@ -28,10 +29,10 @@ class Lcg:
         return self.state / 2**32
 
 
-def scene_text():
+def scene_text(blocks=BLOCKS):
     rng = Lcg(20261122)
     parked = []
-    for block in range(BLOCKS):
+    for block in range(blocks):
         aisle_y = block * BLOCK_HEIGHT
         for side, heading in ((1, 90), (-1, 270)):
             row_y = aisle_y + side * (AISLE / 2 + CAR_LENGTH / 2 + 0.05)
@@ -53,7 +54,7 @@ def scene_text():
                     "width": round(width, 3),
                 })
     width = CARS_PER_ROW * PITCH
-    height = BLOCKS * BLOCK_HEIGHT
+    height = blocks * BLOCK_HEIGHT
     header = {
         "format": "cardemo-scene/1",
         "name": "large-lot",
@@ -75,9 +76,11 @@ def scene_text():
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--check", action="store_true", help="compare with OUT instead of writing it")
+    parser.add_argument("--blocks", type=int, default=BLOCKS,
+                        help=f"double rows of {2 * CARS_PER_ROW} bays (default {BLOCKS}, the bundled lot)")
     parser.add_argument("out")
     args = parser.parse_args()
-    text, count = scene_text()
+    text, count = scene_text(args.blocks)
     if args.check:
         with open(args.out, encoding="utf-8") as f:
             same = f.read() == text
