@@ -6,10 +6,11 @@ Each manoeuvre is a list of (KEYS, until) steps: `until` is a frame count, or a 
 trace row (heading reached, speed through zero, ...) that cardemo finds by running the replay so
 far with --trace. A pedal held through a stop holds the car (docs/controls.md), so a manoeuvre
 that brakes and then drives the other way lets go for one frame in between (('.', 1)); the
-steering ramp needs no fixed holds, since the turns run until their heading is reached. The manoeuvre is first driven in an empty scene from the origin; the level is
-then built around its end pose (the bay where the car stops, the player's start that distance
-before it), so the replay parks whatever the car physics. Run it again after a physics change and
-re-check the hits and parked frames it prints.
+steering ramp needs no fixed holds, since the turns run until their heading is reached. The
+manoeuvre is first driven in an empty scene from the origin; the level is then built around its
+end pose (the bay where the car stops, the player's start that distance before it), so the replay
+parks whatever the car physics. Run it again after a physics change and re-check the hits and
+parked frames it prints.
 
 usage: scripts/make_levels.py CARDEMO_BINARY [LEVEL_NUMBER...]
 """
@@ -256,10 +257,12 @@ def make5(S,B,rows):
       S,(bx,by,0,5.5,2.6),
       {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
       parked,obstacles,mk,[[r(S[0]-4),r(min(bottom,by)-8)],[bx+5,r(max(top,by)+8)]])
+# Turns to 34 degrees: with the steering ramp each leg is longer, and the course must still fit a
+# 1024 px wide window at the camera's closest fit (24 px/m).
 LEVEL5={'file':'level-5-slalom','bay':(0.0,0.0),'make':make5,
     'comment':'Level 5: accelerate, full left and right lock in turn past three bollards, straighten, brake in the bay.',
-    'steps':[('U',lambda q:f(q,'x')>1),('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
-             ('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
+    'steps':[('U',lambda q:f(q,'x')>1),('UL',lambda q:f(q,'heading_deg')>34),('UR',lambda q:f(q,'heading_deg')<-34),
+             ('UL',lambda q:f(q,'heading_deg')>34),('UR',lambda q:f(q,'heading_deg')<-34),
              ('UL',lambda q:f(q,'heading_deg')>-7.5),('U',lambda q:abs(f(q,'steer_deg'))<0.01),
              ('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
