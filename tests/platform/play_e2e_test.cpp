@@ -1,7 +1,8 @@
 // End-to-end: `cardemo play` under Xvfb driven by xdotool; the recording must replay headless to
 // the same outcome, a game stopped by SIGINT must leave a valid recording, and level 1 chosen in
-// the scene picker can be driven to PARKED, then N opens level 2, Esc returns to the picker and
-// Esc there quits. The help holds the simulation, a restart after GAME
+// the scene picker can be driven to PARKED (gear N, nothing left in the bay readout), then N opens
+// level 2, where Down at a standstill reverses (gear R), Esc returns to the picker and Esc there
+// quits. The help holds the simulation, a restart after GAME
 // OVER keeps both attempts' recordings, WASD and Space drive, a replay played in the window
 // hands over only when the player drives, and a replay watched to PARKED saves no best score.
 
@@ -607,6 +608,11 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   ASSERT_TRUE(waitForTitle("level-2-reverse"))
       << "N did not open level 2: " << slurp(dir_ / "play.log");
   std::this_thread::sleep_for(300ms);
+  // In level 2, Down pressed at a standstill reverses at once: the HUD's gear reads R and the
+  // speed is negative when the level is left (the summary holds what the HUD showed last).
+  shell(display_, "xdotool key p");
+  std::this_thread::sleep_for(500ms);
+  ASSERT_TRUE(hold("Down", 60));
   shell(display_, "xdotool key Escape");
   ASSERT_TRUE(waitForTitle("choose a scene"))
       << "Esc did not return to the picker: " << slurp(dir_ / "play.log");
@@ -621,12 +627,27 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   EXPECT_EQ(live["parked"].get<std::int64_t>(), idle + golden_parked) << live.dump();
   EXPECT_EQ(live["frames"], live["parked"]) << "the game stops stepping once parked";
   EXPECT_EQ(live["score"]["damage"], 0);
-  EXPECT_EQ(live["score"]["frames"], live["parked"]);
+  // The level clock starts at the first move, after the idle frames: the score is the golden's.
+  EXPECT_EQ(live["clock_start"], idle) << live.dump();
+  EXPECT_EQ(live["score"]["frames"], golden_parked) << live.dump();
   EXPECT_GE(live["score"]["stars"].get<int>(), 2);
+  // Parked: standing with no pedal held, gear N, and the bay's readout has nothing left to ask.
+  EXPECT_EQ(live["final"]["gear"], "N") << live.dump();
+  EXPECT_EQ(live["final"]["speed"], 0.0) << live.dump();
+  EXPECT_EQ(live["not_parked"], nlohmann::json::array()) << live.dump();
   // The last game (level 2, left with Esc) wrote its own summary.
   const nlohmann::json last = loadJson(slurp(json));
   ASSERT_TRUE(last.is_object());
   EXPECT_EQ(last["scene"], "level-2-reverse");
+  EXPECT_EQ(last["final"]["gear"], "R") << last.dump();
+  EXPECT_LT(last["final"]["speed"].get<double>(), 0.0) << last.dump();
+  // Not parked: the readout says how far the bay is, in the window's words.
+  ASSERT_TRUE(last["not_parked"].is_array()) << last.dump();
+  bool far = false;
+  for (const auto& why : last["not_parked"]) {
+    far = far || why.get<std::string>().find(" m to the bay") != std::string::npos;
+  }
+  EXPECT_TRUE(far) << last.dump();
 
   const nlohmann::json headless = replayHeadless(record, dir_ / "replay.out");
   ASSERT_TRUE(headless.is_object()) << slurp(dir_ / "replay.out");
@@ -641,7 +662,7 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   // The score was saved as the best.
   const nlohmann::json best = loadJson(slurp(xdg / "cardemo" / "best-scores.json"));
   ASSERT_TRUE(best.is_object()) << "no best-scores file";
-  EXPECT_EQ(best["scenes"]["level-1-straight"]["frames"], live["parked"]);
+  EXPECT_EQ(best["scenes"]["level-1-straight"]["frames"], live["score"]["frames"]);
   // Two scenes were opened in one process: a missing sound device is reported once, not per scene.
   const std::string text = slurp(dir_ / "play.log");
   const std::size_t said = text.find("playing without sound");
