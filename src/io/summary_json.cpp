@@ -15,6 +15,16 @@ nlohmann::json hzJson(double hz) {
 
 }  // namespace
 
+nlohmann::json bayChainJson(const BayChain& chain) {
+  nlohmann::json bay = nullptr;
+  if (const std::optional<std::size_t> current = chain.current()) bay = chain.bays()[*current].id;
+  return {{"count", chain.count()},
+          {"bay", bay},
+          {"bays", chain.bays().size()},
+          {"clock_frames", chain.clockFrames()},
+          {"over", chain.over()}};
+}
+
 nlohmann::json scoreJson(const ParkingScore& score) {
   return {{"frames", score.frames},
           {"seconds", score.seconds},
