@@ -5,7 +5,9 @@
 
 #include <random>
 #include <string>
+#include <utility>
 
+#include "../support/mutate_text.hpp"
 #include "io/pair_csv.hpp"
 #include "io/replay_text.hpp"
 #include "io/scene_json.hpp"
@@ -37,33 +39,10 @@ constexpr std::string_view kPairs =
 constexpr std::string_view kPairs3 =
     "0,0,0,1,0,0,0,2,4,6,1,2,3,1,0,0,0,1,1,1\n5,5,5,0.7,0.1,0.2,0.7,1,1,1,0,0,0,1,0,0,0,1,1,1\n";
 
-// One random edit: replace, insert, delete or duplicate a byte range, or truncate.
+// The replay, scene and pair readers' mutations: up to four edits, replay keys among the bytes.
 std::string mutate(std::string s, std::mt19937_64& rng) {
-  static constexpr std::string_view kInteresting = "{}[]\",:.-+eE0123456789#\n\r\t \\UDLR";
-  const int edits = 1 + static_cast<int>(rng() % 4);
-  for (int i = 0; i < edits && !s.empty(); ++i) {
-    const std::size_t at = rng() % s.size();
-    const char c =
-        (rng() % 2) ? kInteresting[rng() % kInteresting.size()] : static_cast<char>(rng() % 256);
-    switch (rng() % 5) {
-      case 0:
-        s[at] = c;
-        break;
-      case 1:
-        s.insert(at, 1, c);
-        break;
-      case 2:
-        s.erase(at, 1 + rng() % 8);
-        break;
-      case 3:
-        s.insert(at, s.substr(at, 1 + rng() % 16));
-        break;
-      default:
-        s.resize(at);
-        break;
-    }
-  }
-  return s;
+  static constexpr test::TextMutation kHow{"{}[]\",:.-+eE0123456789#\n\r\t \\UDLR", 4, 16, false};
+  return test::mutateText(std::move(s), rng, kHow);
 }
 
 template <typename T, typename Parse>

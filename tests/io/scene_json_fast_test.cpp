@@ -13,8 +13,10 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "../support/mutate_text.hpp"
 #include "../support/scene_bits.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_json_lines.hpp"
@@ -612,39 +614,10 @@ TEST(SceneJsonFast, RandomScenesReadTheSameBothWays) {
   EXPECT_GT(accepted_count, 500);
 }
 
-// One random edit: replace, insert, delete or duplicate a byte range, or truncate.
+// Scene mutations: up to three edits, JSON's bytes, and digits changed for other valid values.
 std::string mutate(std::string s, std::mt19937_64& rng) {
-  static constexpr std::string_view kInteresting = "{}[]\",:.-+eE0123456789\n\t \\u";
-  const int edits = 1 + static_cast<int>(rng() % 3);
-  for (int i = 0; i < edits && !s.empty(); ++i) {
-    const std::size_t at = rng() % s.size();
-    const char c =
-        (rng() % 2) ? kInteresting[rng() % kInteresting.size()] : static_cast<char>(rng() % 256);
-    switch (rng() % 6) {
-      case 0:
-        s[at] = c;
-        break;
-      case 1:
-        s.insert(at, 1, c);
-        break;
-      case 2:
-        s.erase(at, 1 + rng() % 8);
-        break;
-      case 3:
-        s.insert(at, s.substr(at, 1 + rng() % 24));
-        break;
-      case 4:
-        // A digit changed: mostly a still-valid scene with another value.
-        if (const auto d = s.find_first_of("0123456789", at); d != std::string::npos) {
-          s[d] = static_cast<char>('0' + rng() % 10);
-        }
-        break;
-      default:
-        s.resize(at);
-        break;
-    }
-  }
-  return s;
+  static constexpr test::TextMutation kHow{"{}[]\",:.-+eE0123456789\n\t \\u", 3, 24, true};
+  return test::mutateText(std::move(s), rng, kHow);
 }
 
 TEST(SceneJsonFast, MutatedScenesAreJudgedAlike) {
