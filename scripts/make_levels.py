@@ -4,10 +4,13 @@
 
 Each manoeuvre is a list of (KEYS, until) steps: `until` is a frame count, or a condition on the
 trace row (heading reached, speed through zero, ...) that cardemo finds by running the replay so
-far with --trace. The manoeuvre is first driven in an empty scene from the origin; the level is
-then built around its end pose (the bay where the car stops, the player's start that distance
-before it), so the replay parks whatever the car physics. Run it again after a physics change and
-re-check the hits and parked frames it prints.
+far with --trace. A pedal held through a stop holds the car (docs/controls.md), so a manoeuvre
+that brakes and then drives the other way lets go for one frame in between (('.', 1)); the
+steering ramp needs no fixed holds, since the turns run until their heading is reached. The
+manoeuvre is first driven in an empty scene from the origin; the level is then built around its
+end pose (the bay where the car stops, the player's start that distance before it), so the replay
+parks whatever the car physics. Run it again after a physics change and re-check the hits and
+parked frames it prints.
 
 usage: scripts/make_levels.py CARDEMO_BINARY [LEVEL_NUMBER...]
 """
@@ -182,7 +185,7 @@ def make2(S,B,rows):
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":90},
       parked,obstacles,mk,[[r(S[0]-14),r(S[1]-10)],[bx+12,by+5]])
 LEVEL2={'file':'level-2-reverse','bay':(0.0,5.0),'make':make2,'comment':'Level 2: drive past the bay, stop, reverse in on full left lock, straighten, stop.',
-    'steps':[('U',100),('D',lambda r:f(r,'speed')<=0),('DL',60),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<-85.5),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('D',40),('.',60),('U',lambda r:f(r,'speed')>=0),('.',30)]}
+    'steps':[('U',100),('D',lambda r:f(r,'speed')<=0),('.',1),('DL',60),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<-85.5),('.',lambda r:abs(f(r,'steer_deg'))<0.01),('D',40),('.',60),('U',lambda r:f(r,'speed')>=0),('.',30)]}
 
 def make3(S,B,rows):
     bx,by=B[0],B[1]
@@ -204,7 +207,7 @@ def make3(S,B,rows):
       {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":120},
       parked,obstacles,mk,[[bx-16,by-2.5],[bx+16,by+11]])
 LEVEL3={'file':'level-3-parallel','bay':(0.0,0.0),'make':make3,'comment':'Level 3: stop beside the front car, reverse on right lock, straighten, then left lock into the space.',
-    'steps':[('U',90),('D',lambda r:f(r,'speed')<=0),('DR',60),(('R',8),('DR',16),lambda r:f(r,'heading_deg')>42),('D',30),('.',20),('DL',20),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<2.5),('U',lambda r:f(r,'speed')>=0),('.',30)]}
+    'steps':[('U',90),('D',lambda r:f(r,'speed')<=0),('.',1),('DR',60),(('R',8),('DR',16),lambda r:f(r,'heading_deg')>42),('D',30),('.',20),('DL',20),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<2.5),('U',lambda r:f(r,'speed')>=0),('.',30)]}
 
 def make4(S,B,rows):
     bx,by=B[0],B[1]
@@ -254,10 +257,12 @@ def make5(S,B,rows):
       S,(bx,by,0,5.5,2.6),
       {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
       parked,obstacles,mk,[[r(S[0]-4),r(min(bottom,by)-8)],[bx+5,r(max(top,by)+8)]])
+# Turns to 34 degrees: with the steering ramp each leg is longer, and the course must still fit a
+# 1024 px wide window at the camera's closest fit (24 px/m).
 LEVEL5={'file':'level-5-slalom','bay':(0.0,0.0),'make':make5,
     'comment':'Level 5: accelerate, full left and right lock in turn past three bollards, straighten, brake in the bay.',
-    'steps':[('U',lambda q:f(q,'x')>1),('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
-             ('UL',lambda q:f(q,'heading_deg')>40),('UR',lambda q:f(q,'heading_deg')<-40),
+    'steps':[('U',lambda q:f(q,'x')>1),('UL',lambda q:f(q,'heading_deg')>34),('UR',lambda q:f(q,'heading_deg')<-34),
+             ('UL',lambda q:f(q,'heading_deg')>34),('UR',lambda q:f(q,'heading_deg')<-34),
              ('UL',lambda q:f(q,'heading_deg')>-7.5),('U',lambda q:abs(f(q,'steer_deg'))<0.01),
              ('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
@@ -288,8 +293,8 @@ def make6(S,B,rows):
 LEVEL6={'file':'level-6-turn','bay':(0.0,0.0),'make':make6,
     'comment':'Level 6: forward on left lock to face the kerb, reverse on right lock, forward on left lock, straighten, drive out, stop.',
     'steps':[('U',50),('.',10),(('L',16),('UL',8),lambda q:f(q,'heading_deg')>80),('D',lambda q:f(q,'speed')<=0),
-             ('DR',30),(('R',12),('DR',12),lambda q:f(q,'heading_deg')>150),('U',lambda q:f(q,'speed')>=0),
-             ('UL',30),(('L',12),('UL',12),lambda q:abs(f(q,'heading_deg'))>177),('.',lambda q:abs(f(q,'steer_deg'))<0.01),
+             ('.',1),('DR',30),(('R',12),('DR',12),lambda q:f(q,'heading_deg')>150),('U',lambda q:f(q,'speed')>=0),
+             ('.',1),('UL',30),(('L',12),('UL',12),lambda q:abs(f(q,'heading_deg'))>177),('.',lambda q:abs(f(q,'steer_deg'))<0.01),
              ('U',lambda q:f(q,'x')<-10),('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
 

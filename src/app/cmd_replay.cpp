@@ -23,6 +23,7 @@ struct ReplayOptions {
   std::string json_path;
   std::string trace_path;
   bool print_expect = false;
+  bool bay_chain = false;
 };
 
 constexpr std::size_t kMaxHitsShown = 12;
@@ -78,6 +79,14 @@ std::string summaryText(const World& world, const ReplayOptions& options) {
   return out;
 }
 
+// The summary JSON, with the bay chain's when --bay-chain ran one.
+nlohmann::json summaryOf(const World& world, const ParkingChallenge* goal,
+                         const std::optional<BayChain>& chain) {
+  nlohmann::json j = summaryJson(world, goal);
+  if (chain) j["bay_chain"] = bayChainJson(*chain);
+  return j;
+}
+
 std::string goalText(const ParkingChallenge* challenge) {
   if (challenge == nullptr) return "";
   const std::optional<std::int64_t> start = challenge->clockStart();
@@ -119,12 +128,15 @@ int runReplayCommand(const ReplayOptions& options) {
     trace->write(traceRow(world));
   }
   std::optional<ParkingChallenge> challenge = startChallenge(world);
+  std::optional<BayChain> chain;
+  if (options.bay_chain) chain = startBayChain(world);
   // No trace and no goal: nothing to observe between steps, so no per-frame call at all.
   std::function<void(const World&)> after_step;
-  if (trace || challenge) {
+  if (trace || challenge || chain) {
     after_step = [&](const World& w) {
       if (trace) trace->write(traceRow(w));
       if (challenge) challenge->observe(w);
+      if (chain) chain->observe(w);
     };
   }
   runReplayInputs(world, replay.value(), after_step);
@@ -137,11 +149,17 @@ int runReplayCommand(const ReplayOptions& options) {
   }
 
   const bool json_to_stdout = options.json_path == "-";
-  const std::string summary = summaryText(world, options) + goalText(goal);
+  std::string summary = summaryText(world, options) + goalText(goal);
+  if (chain) {
+    const std::optional<std::size_t> bay = chain->current();
+    summary += "bay chain " + std::to_string(chain->count()) + " parked of " +
+               std::to_string(chain->bays().size()) + " free bays" +
+               (bay ? ", next " + chain->bays()[*bay].id : std::string()) + "\n";
+  }
   std::fputs(summary.c_str(), json_to_stdout ? stderr : stdout);
   if (!options.json_path.empty()) {
     if (std::string why =
-            writeFileAtomically(options.json_path, summaryJson(world, goal).dump(2) + "\n");
+            writeFileAtomically(options.json_path, summaryOf(world, goal, chain).dump(2) + "\n");
         !why.empty()) {
       std::fprintf(stderr, "%s\n", why.c_str());
       return 2;
@@ -175,6 +193,9 @@ void addReplayCommand(CLI::App& app, int& exit_code) {
                   "Scene file; overrides the replay's `scene` line");
   sub->add_option("--json", options->json_path, "Write the summary JSON to FILE (- for stdout)");
   sub->add_option("--trace", options->trace_path, "Write a CSV with one row per frame to FILE");
+  sub->add_flag(
+      "--bay-chain", options->bay_chain,
+      "Free drive's bay chain: count the free bays parked in turn (bay_chain in the JSON)");
   sub->add_flag("--print-expect", options->print_expect,
                 "Print expectation lines that describe this run (to paste into the replay)");
   sub->callback([options, &exit_code] { exit_code = runReplayCommand(*options); });

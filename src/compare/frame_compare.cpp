@@ -27,7 +27,13 @@ FrameComparer::FrameComparer(const World& world, const CompareOptions& options)
     shapes_.push_back(box2dShapesOf(colliders.shape(i)));
     report_.ids.push_back(world.colliderId(i));
   }
-  for (auto& last : last_true_) last.assign(colliders.size(), -2);
+  if (const std::optional<Aabb2>& bounds = world.scene().bounds) {
+    for (const WallSide side : kWallSides) {
+      walls_.push_back(box2dWallOf(*bounds, side));
+      report_.ids.push_back(wallId(side));
+    }
+  }
+  for (auto& last : last_true_) last.assign(report_.ids.size(), -2);
   player_ = box2dShapesOf(world.carBox());
   check(world);
 }
@@ -46,6 +52,15 @@ void FrameComparer::check(const World& world) {
       return judgePair(player, player_, shape, shapes_[i], options_.all_exact);
     });
     record(world.frame(), i, v);
+  }
+  if (walls_.empty()) return;
+  const Aabb2& bounds = *world.scene().bounds;
+  const std::array<double, kWallCount> depth = wallDepths(player_bounds, bounds);
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    if (options_.radius && -depth[k] > *options_.radius) continue;
+    const PairVerdicts v =
+        judgeWall(player, player_, bounds, kWallSides[k], walls_[k], options_.all_exact);
+    record(world.frame(), static_cast<std::uint32_t>(colliders.size() + k), v);
   }
 }
 

@@ -32,7 +32,7 @@ struct Tally {
 /// A first contact implied by a verdict: false at the previous frame (or frame 0), true now.
 struct FirstContact {
   std::int64_t frame = 0;      ///< Frame.
-  std::uint32_t collider = 0;  ///< Collider index (parked cars, then obstacles).
+  std::uint32_t collider = 0;  ///< Collider index (parked cars, then obstacles, then walls).
   friend bool operator==(const FirstContact&, const FirstContact&) = default;
 };
 
@@ -58,8 +58,8 @@ struct CompareReport {
   std::int64_t pairs_checked = 0;  ///< Player-collider pairs judged, over all frames.
   std::int64_t gmp_calls = 0;      ///< Pairs that needed the GMP oracle.
   std::array<VerdictRecord, kVerdictCount> verdicts;  ///< Indexed by Verdict.
-  std::vector<std::string> ids;                       ///< Collider ids by index.
-  std::optional<double> radius;                       ///< The --radius in force, if any.
+  std::vector<std::string> ids;  ///< Collider ids by index; then the walls' (bounds-west, ...).
+  std::optional<double> radius;  ///< The --radius in force, if any.
 
   /// The record of one verdict.
   [[nodiscard]] const VerdictRecord& operator[](Verdict v) const {
@@ -90,6 +90,7 @@ class FrameComparer {
   CompareOptions options_;
   CompareReport report_;
   std::vector<Box2dPair> shapes_;
+  std::vector<Box2dWall> walls_;  // Box2D's edges of the scene's walls (none without bounds)
   Box2dPair player_;
   // Per verdict and collider: the last frame at which the verdict was true (-2: never).
   std::array<std::vector<std::int64_t>, kVerdictCount> last_true_;

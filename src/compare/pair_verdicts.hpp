@@ -6,6 +6,7 @@
 
 #include "collision/narrow_phase.hpp"
 #include "compare/box2d/box2d_shapes.hpp"
+#include "sim/walls.hpp"
 
 namespace cardemo::compare {
 
@@ -61,6 +62,22 @@ struct PairVerdicts {
 /// judgePair against an obstacle.
 [[nodiscard]] PairVerdicts judgePair(const Obb2& player, const Box2dPair& player_b2,
                                      const ConvexPolygon& polygon, const Box2dPair& shape_b2,
+                                     bool all_exact);
+
+/// Box2D's edges for one wall, with and without the default skin.
+struct Box2dWall {
+  Box2dEdge bare;  ///< Skin 0.
+  Box2dEdge skin;  ///< Skin kBox2dDefaultSkin.
+};
+
+/// Box2D's two-sided edge along one wall of `walls` (the whole side of the bounds).
+[[nodiscard]] Box2dWall box2dWallOf(const Aabb2& walls, WallSide side);
+
+/// Judges the player box against one wall of the scene's bounds every way: ours is the World's own
+/// test (the box's bounds reach the wall: wallDepths >= 0), exact the oracle's (collideObbWall),
+/// Box2D a two-sided edge against the box.
+[[nodiscard]] PairVerdicts judgeWall(const Obb2& player, const Box2dPair& player_b2,
+                                     const Aabb2& walls, WallSide side, const Box2dWall& wall_b2,
                                      bool all_exact);
 
 /// Agreement of one verdict with the exact one.

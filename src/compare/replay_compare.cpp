@@ -49,7 +49,8 @@ Parsed<ReplayComparison> compareReplay(const std::string& replay_path,
   if (on_loaded) on_loaded(world.colliders().size());
   FrameComparer comparer(world, options);
   runReplayInputs(world, replay.value(), [&](const World& w) { comparer.check(w); });
-  return ReplayComparison{comparer.report(), world.scene().name, world.colliders().size()};
+  return ReplayComparison{comparer.report(), world.scene().name, world.colliders().size(),
+                          world.scene().bounds ? kWallCount : 0};
 }
 
 nlohmann::json comparisonJson(const CompareReport& report) {
@@ -84,7 +85,9 @@ std::size_t hitDifferences(const CompareReport& report, Verdict v) {
 std::string comparisonText(const ReplayComparison& c) {
   const CompareReport& r = c.report;
   std::string out;
-  out += "scene     " + c.scene_name + " (" + std::to_string(c.colliders) + " colliders)\n";
+  out += "scene     " + c.scene_name + " (" + std::to_string(c.colliders) + " colliders" +
+         (c.walls > 0 ? " and the " + std::to_string(c.walls) + " walls of its bounds" : "") +
+         ")\n";
   out += "frames    " + std::to_string(r.frames) + " (+ frame 0)\n";
   out += "pairs     " + std::to_string(r.pairs_checked) + " checked";
   out += r.radius ? " (only colliders within " + sepText(*r.radius) + " m of the player)" : "";

@@ -15,6 +15,7 @@ struct ReplayComparison {
   CompareReport report;       ///< Counts, hits, examples.
   std::string scene_name;     ///< The scene's name.
   std::size_t colliders = 0;  ///< Parked cars plus obstacles in the scene.
+  std::size_t walls = 0;      ///< Walls of the scene's bounds checked too (4, or 0 without bounds).
 };
 
 /// Loads the replay and its scene (`scene_override` wins when non-empty), runs every input frame

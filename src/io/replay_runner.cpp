@@ -86,6 +86,12 @@ std::optional<ParkingChallenge> startChallenge(const World& world) {
   return challenge;
 }
 
+BayChain startBayChain(const World& world) {
+  BayChain chain(world.scene(), world.settings().hz);
+  chain.observe(world);
+  return chain;
+}
+
 ReplayExpectations expectationsOf(const World& world, const ParkingChallenge* challenge) {
   ReplayExpectations e;
   e.frames = world.frame();

@@ -7,6 +7,7 @@
 
 #include "io/input_error.hpp"
 #include "io/replay_text.hpp"
+#include "sim/bay_chain.hpp"
 #include "sim/parking_goal.hpp"
 #include "sim/world.hpp"
 
@@ -36,6 +37,9 @@ void runReplayInputs(World& world, const Replay& replay,
 /// A parking challenge for the world's scene that has observed its current frame, or nullopt when
 /// the scene has no goal.
 [[nodiscard]] std::optional<ParkingChallenge> startChallenge(const World& world);
+
+/// Free drive's bay chain over the world's scene, having observed its current frame.
+[[nodiscard]] BayChain startBayChain(const World& world);
 
 /// Compares the replay's expectation lines with the world's outcome (and the challenge's, for
 /// `expect parked`; null when the scene has no goal); one sentence per difference.

@@ -15,6 +15,16 @@ nlohmann::json hzJson(double hz) {
 
 }  // namespace
 
+nlohmann::json bayChainJson(const BayChain& chain) {
+  nlohmann::json bay = nullptr;
+  if (const std::optional<std::size_t> current = chain.current()) bay = chain.bays()[*current].id;
+  return {{"count", chain.count()},
+          {"bay", bay},
+          {"bays", chain.bays().size()},
+          {"clock_frames", chain.clockFrames()},
+          {"over", chain.over()}};
+}
+
 nlohmann::json scoreJson(const ParkingScore& score) {
   return {{"frames", score.frames},
           {"seconds", score.seconds},
@@ -58,7 +68,8 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
        {{"x", car.position.x()},
         {"y", car.position.y()},
         {"heading_deg", degreesOf(car.direction)},
-        {"speed", car.speed}}},
+        {"speed", car.speed},
+        {"gear", std::string(1, gearLetter(world.gear()))}}},
       {"hash", hashHex(world.stateHash())},
       {"stats",
        {{"broadphase_queries", s.broadphase_queries},

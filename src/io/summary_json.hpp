@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/bay_chain.hpp"
 #include "sim/parking_goal.hpp"
 #include "sim/world.hpp"
 
@@ -13,6 +14,10 @@ namespace cardemo {
 /// `clock_start` (the level clock's first frame, or null) and `not_parked` (why not, or []).
 [[nodiscard]] nlohmann::json summaryJson(const World& world,
                                          const ParkingChallenge* challenge = nullptr);
+
+/// Free drive's bay chain as JSON: count (bays parked), bay (the highlighted bay's id, or null),
+/// bays (how many the lot has), clock_frames and over.
+[[nodiscard]] nlohmann::json bayChainJson(const BayChain& chain);
 
 /// The score as JSON: frames, seconds, damage, stars.
 [[nodiscard]] nlohmann::json scoreJson(const ParkingScore& score);

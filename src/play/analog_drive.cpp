@@ -35,21 +35,48 @@ PadState padFromAxes(int left_x, int left_y, int trigger_left, int trigger_right
   return pad;
 }
 
-InputFrame AnalogDrive::sample(const PadState& pad) {
+bool AnalogDrive::pedal(SigmaDelta& modulator, Squeeze& squeeze, double level, bool against) {
+  if (!(level > 0.0)) {
+    squeeze = Squeeze::kNone;
+    return modulator.next(0.0);
+  }
+  if (squeeze == Squeeze::kNone) squeeze = against ? Squeeze::kBrakes : Squeeze::kDrives;
+  // A braking squeeze holds nothing once the car no longer moves against it: a pulse that began at
+  // a standstill would be a fresh press, which drives the other way.
+  if (squeeze == Squeeze::kBrakes && !against) return modulator.next(0.0);
+  return modulator.next(level);
+}
+
+InputFrame AnalogDrive::sample(const PadState& pad, const World& world) {
+  const double speed = world.car().speed;
   InputFrame out;
-  out.up = up_.next(pad.throttle);
-  out.down = down_.next(pad.brake);
-  out.left = left_.next(-pad.steer);
-  out.right = right_.next(pad.steer);
+  out.up = pedal(up_, up_squeeze_, pad.throttle, speed < 0.0);
+  out.down = pedal(down_, down_squeeze_, pad.brake, speed > 0.0);
   out.handbrake = pad.handbrake;
-  return out;
+  // The wheel angle the stick asks for (left positive), and the key that steers nearest to it; on
+  // a tie no key, so a centred stick never fights the keyboard.
+  const double steer = std::isnan(pad.steer) ? 0.0 : std::clamp(pad.steer, -1.0, 1.0);
+  const double aim = -steer * effectiveLock(world.carParams(), speed, pad.handbrake);
+  InputFrame best = out;
+  double best_error = std::abs(world.steerAfter(out) - aim);
+  for (const bool left : {true, false}) {
+    InputFrame keys = out;
+    keys.left = left;
+    keys.right = !left;
+    const double error = std::abs(world.steerAfter(keys) - aim);
+    if (error < best_error) {
+      best = keys;
+      best_error = error;
+    }
+  }
+  return best;
 }
 
 void AnalogDrive::reset() {
   up_.reset();
   down_.reset();
-  left_.reset();
-  right_.reset();
+  up_squeeze_ = Squeeze::kNone;
+  down_squeeze_ = Squeeze::kNone;
 }
 
 InputFrame mergeInputs(const InputFrame& a, const InputFrame& b) {

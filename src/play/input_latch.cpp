@@ -1,5 +1,7 @@
 #include "play/input_latch.hpp"
 
+#include <cstdint>
+
 namespace cardemo {
 namespace {
 
@@ -22,22 +24,32 @@ bool& slot(InputFrame& frame, DriveKey key) {
 }  // namespace
 
 void InputLatch::press(DriveKey key) {
+  if (slot(reported_, key) && slot(released_since_sample_, key)) slot(repressed_, key) = true;
   slot(held_, key) = true;
   slot(pressed_since_sample_, key) = true;
 }
 
 void InputLatch::release(DriveKey key) {
   slot(held_, key) = false;
+  slot(released_since_sample_, key) = true;
 }
 
 void InputLatch::releaseAll() {
   held_ = {};
   pressed_since_sample_ = {};
+  repressed_ = {};
+  pending_ = {};
+  released_since_sample_ = reported_;
 }
 
 InputFrame InputLatch::sample() {
-  const InputFrame out = InputFrame::fromBits(held_.bits() | pressed_since_sample_.bits());
+  const std::uint8_t any = held_.bits() | pressed_since_sample_.bits() | pending_.bits();
+  const InputFrame out = InputFrame::fromBits(static_cast<std::uint8_t>(any & ~repressed_.bits()));
+  pending_ = repressed_;
+  repressed_ = {};
   pressed_since_sample_ = {};
+  released_since_sample_ = {};
+  reported_ = out;
   return out;
 }
 

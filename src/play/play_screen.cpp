@@ -200,7 +200,8 @@ void PlayScreen::toggleMute() {
 void PlayScreen::runSteps(int steps, const PadState& pad) {
   for (int i = 0; i < steps && !ended(); ++i) {
     const bool was_recording = session_.recording();
-    last_input_ = session_.step(mergeInputs(latch_.sample(), analog_.sample(pad)));
+    last_input_ =
+        session_.step(mergeInputs(latch_.sample(), analog_.sample(pad, session_.world())));
     notePublished(was_recording);  // GAME OVER publishes the recording at once
     ++out_.steps;
     effects_.observe(session_.world());

@@ -26,6 +26,19 @@ std::string format(const char* fmt, double v) {
   return buf;
 }
 
+// R stands out (amber, the reversing lamps' colour); N is dim: nothing drives the car.
+Rgba gearColor(Gear gear) {
+  switch (gear) {
+    case Gear::kReverse:
+      return {255, 190, 80, 255};
+    case Gear::kNeutral:
+      return kDim;
+    case Gear::kDrive:
+      break;
+  }
+  return kText;
+}
+
 int px(float size, float scale) {
   return static_cast<int>(std::lround(size * scale));
 }
@@ -73,6 +86,12 @@ float drawTable(Canvas& canvas, const Eigen::Vector2f& top_left, float width,
   return row * static_cast<float>(rows.size());
 }
 
+std::string speedText(double speed) {
+  const double kmh = speed * 3.6;
+  // Below half the last digit it reads 0.0, never "-0.0".
+  return std::abs(kmh) < 0.05 ? std::string("0.0 km/h") : format("%.1f km/h", kmh);
+}
+
 Rgba healthColor(double fraction) {
   const double f = std::clamp(fraction, 0.0, 1.0);
   auto lerp = [](double a, double b, double t) {
@@ -117,8 +136,8 @@ HealthBarRect healthBarRect(const Eigen::Vector2i& viewport) {
 
 namespace {
 
-// Rows of the player's HUD table: speed and crashes (the developer rows come below them).
-constexpr int kPlayerRows = 2;
+// Rows of the player's HUD table: gear, speed and crashes (the developer rows come below them).
+constexpr int kPlayerRows = 3;
 
 // Height of the HUD panel holding the health bar and `rows` table rows, pixels.
 float hudPanelHeight(const Eigen::Vector2i& viewport, std::size_t rows) {
@@ -151,10 +170,10 @@ Eigen::Vector2f drawHud(Canvas& canvas, const World& world, const DrawOptions& o
   const float pad = 10.0f * s;
   const int h = px(16, s);
   std::vector<HudRow> rows;
-  rows.push_back({"Speed",
-                  options.run_over ? std::string("stopped")
-                                   : format("%.0f km/h", std::abs(world.car().speed) * 3.6),
-                  kText});
+  const Gear gear = world.gear();
+  rows.push_back({"Gear", std::string(1, gearLetter(gear)), gearColor(gear)});
+  rows.push_back(
+      {"Speed", options.run_over ? std::string("stopped") : speedText(world.car().speed), kText});
   rows.push_back({"Crashes", std::to_string(world.damagingCrashes()), kText});
   // Developer rows: a player driving sees speed and crashes; the debug overlay (B), a replay's
   // playback and `cardemo render` add the frame, the overlay the raw hits (every first touch, as

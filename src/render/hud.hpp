@@ -1,6 +1,6 @@
 #pragma once
-/// Screen-space overlays: the HUD (health bar, speed, crashes; hits, frame, FPS for developers),
-/// the PAUSED banner, the game-over panel and the F1 help panel.
+/// Screen-space overlays: the HUD (health bar, gear, speed, crashes; hits, frame, FPS for
+/// developers), the PAUSED banner, the game-over panel and the F1 help panel.
 
 #include <string>
 #include <vector>
@@ -12,6 +12,10 @@
 #include "sim/world.hpp"
 
 namespace cardemo {
+
+/// The HUD's speed: km/h with one decimal, negative when reversing ("-3.2 km/h"; "0.0 km/h" below
+/// 0.05 km/h either way).
+[[nodiscard]] std::string speedText(double speed);
 
 /// Health bar colour: green when full, through yellow, to red when empty (`fraction` in 0..1).
 [[nodiscard]] Rgba healthColor(double fraction);

@@ -97,8 +97,15 @@ CarState integrateCar(const CarState& state, const InputFrame& input, const CarP
 
 CarState integrateCarToward(const CarState& state, const InputFrame& input, const CarParams& params,
                             double dt, double steer_target, CarStepScheme car_step) {
+  return integrateCarSteered(state, input, params, dt,
+                             approach(state.steer, steer_target, params.steer_rate * dt), car_step);
+}
+
+CarState integrateCarSteered(const CarState& state, const InputFrame& input,
+                             const CarParams& params, double dt, double steer,
+                             CarStepScheme car_step) {
   CarState steered = state;
-  steered.steer = approach(state.steer, steer_target, params.steer_rate * dt);
+  steered.steer = steer;
   steered.speed = settledAtLimit(state.speed, input, params);
 
   const SpeedLaw law = speedLawFor(steered.speed, input, params);

@@ -22,7 +22,11 @@ struct CarParams {
   double drag = 0.0016;              ///< Aerodynamic drag coefficient: a = drag * v * |v|, 1/m.
   double rolling_resistance = 0.15;  ///< Constant deceleration while rolling, m/s^2.
   double max_steer = 0.6;            ///< Steering lock at standstill, radians.
-  double steer_rate = 2.5;        ///< Steering wheel rate limit, radians of wheel angle per second.
+  double steer_rate = 2.5;  ///< Fastest wheel rate, radians of wheel angle per second: back towards
+                            ///< the centre always, away from it at the end of the steering ramp.
+  double steer_ramp_start = 0.4;  ///< Wheel rate away from the centre as a steering key goes down,
+                                  ///< rad/s (the keyboard ramp, World::step).
+  double steer_ramp_accel = 1.3;  ///< Growth of that rate per second the key stays held, rad/s^2.
   double lock_speed = 20.0;       ///< Speed (m/s) at which the lock has narrowed to half.
   double restitution = 0.2;       ///< Share of the normal speed that bounces back after an impact.
   double bounce_threshold = 1.0;  ///< Impacts slower than this (m/s) do not bounce at all.
@@ -84,10 +88,17 @@ struct CarState {
 [[nodiscard]] double steerTarget(const CarParams& params, double speed, const InputFrame& input);
 
 /// integrateCar with the steering target given: `steer_target` must be steerTarget(params,
-/// state.speed, input), computed once by a caller that needs the lock too.
+/// state.speed, input), computed once by a caller that needs the lock too. The wheel moves
+/// towards it at `steer_rate` both ways (a key held past the keyboard ramp).
 [[nodiscard]] CarState integrateCarToward(const CarState& state, const InputFrame& input,
                                           const CarParams& params, double dt, double steer_target,
                                           CarStepScheme car_step = nullptr);
+
+/// integrateCar with the step's wheel angle given (`steer`, radians, held over the step): World
+/// moves the wheel by the keyboard ramp (steerStep) and then integrates the rest here.
+[[nodiscard]] CarState integrateCarSteered(const CarState& state, const InputFrame& input,
+                                           const CarParams& params, double dt, double steer,
+                                           CarStepScheme car_step = nullptr);
 
 /// The lateral split step after the integrator (`steered` is the state before it): under the
 /// handbrake the body turns by the integrator's yaw while the velocity keeps its direction (the

@@ -107,43 +107,94 @@ double pushOutSlack(const Eigen::Vector2d& position) {
   return std::max(1e-10, 8e-16 * scale);
 }
 
-bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls,
-                     Eigen::Vector2d& normal) {
-  const Aabb2 box = carBox(car, params).aabb();
-  double dx = 0.0, dy = 0.0;
+namespace {
+
+// The wall of each axis the box touches (kWallCount: none), the west or south one first.
+struct TouchedSides {
+  std::size_t x = kWallCount;
+  std::size_t y = kWallCount;
+};
+
+TouchedSides touchedSides(const std::array<double, kWallCount>& depth) {
+  TouchedSides t;
+  if (depth[0] >= 0.0) {
+    t.x = 0;
+  } else if (depth[1] >= 0.0) {
+    t.x = 1;
+  }
+  if (depth[2] >= 0.0) {
+    t.y = 2;
+  } else if (depth[3] >= 0.0) {
+    t.y = 3;
+  }
+  return t;
+}
+
+// Which way a wall lies from the car along its axis: -1 for west and south, +1 for east and north.
+double sideOf(std::size_t wall) {
+  return wall % 2 == 0 ? -1.0 : 1.0;
+}
+
+// How far to move the car along a wall's axis so that it reaches only the resting penetration
+// into it (0 when it reaches no further than that plus the slack).
+double pushFrom(std::size_t wall, double depth, double rest, double slack) {
+  if (wall == kWallCount || !(depth - rest > slack)) return 0.0;
+  return -sideOf(wall) * (depth - rest);
+}
+
+}  // namespace
+
+WallResponse touchedWalls(const CarState& car, const CarParams& params, const Aabb2& walls) {
+  const std::array<double, kWallCount> depth = wallDepths(carBox(car, params).aabb(), walls);
+  const TouchedSides t = touchedSides(depth);
+  WallResponse out;
+  for (const std::size_t wall : {t.x, t.y}) {
+    if (wall == kWallCount) continue;
+    out.walls[wall] = {true, closingSpeed(car, wallNormal(kWallSides[wall])), depth[wall]};
+  }
+  return out;
+}
+
+WallResponse respondToWalls(CarState& car, const CarParams& params, const Aabb2& walls) {
+  const TouchedSides t = touchedSides(wallDepths(carBox(car, params).aabb(), walls));
+  WallResponse out;
+  if (t.x == kWallCount && t.y == kWallCount) return out;
   // Each wall bounces its own component and its friction slows the other one, both worked out from
   // the velocity before the walls, so a corner gives the same answer whichever wall is "x" (a
   // quarter turn of the scene swaps them). One wall alone is exactly removeClosingPart.
   const Eigen::Vector2d v = car.velocity();
   double vx = v.x(), vy = v.y();
   WallHit x_wall, y_wall;
-  if (box.min.x() < walls.min.x()) {
-    dx = walls.min.x() - box.min.x();
-    x_wall = bounceOffWall(vx, -1.0, params);
-  } else if (box.max.x() > walls.max.x()) {
-    dx = walls.max.x() - box.max.x();
-    x_wall = bounceOffWall(vx, 1.0, params);
+  if (t.x != kWallCount) {
+    out.walls[t.x].closing = std::max(0.0, vx * sideOf(t.x));
+    x_wall = bounceOffWall(vx, sideOf(t.x), params);
   }
-  if (box.min.y() < walls.min.y()) {
-    dy = walls.min.y() - box.min.y();
-    y_wall = bounceOffWall(vy, -1.0, params);
-  } else if (box.max.y() > walls.max.y()) {
-    dy = walls.max.y() - box.max.y();
-    y_wall = bounceOffWall(vy, 1.0, params);
+  if (t.y != kWallCount) {
+    out.walls[t.y].closing = std::max(0.0, vy * sideOf(t.y));
+    y_wall = bounceOffWall(vy, sideOf(t.y), params);
   }
   if (x_wall.closing) vy = slideAlong(vy, x_wall.friction);
   if (y_wall.closing) vx = slideAlong(vx, y_wall.friction);
   if (x_wall.closing || y_wall.closing) setVelocity(car, vx, vy, sizeOf(car));
-  if (dx == 0.0 && dy == 0.0) return false;
-  // Pushed by +dx off the wall at -x: that wall's normal (from the car) is -x.
-  if (std::abs(dx) >= std::abs(dy)) {
-    normal = Eigen::Vector2d(dx > 0.0 ? -1.0 : 1.0, 0.0);
-  } else {
-    normal = Eigen::Vector2d(0.0, dy > 0.0 ? -1.0 : 1.0);
+  // Pushed back to the resting penetration, as a collider's push-out leaves it: a car held against
+  // a wall stays in contact from one frame to the next instead of flickering (one hit, not many).
+  const std::array<double, kWallCount> depth = wallDepths(carBox(car, params).aabb(), walls);
+  const double rest = restingPenetration(car.position);
+  const double slack = pushOutSlack(car.position);
+  const double dx = pushFrom(t.x, t.x == kWallCount ? 0.0 : depth[t.x], rest, slack);
+  const double dy = pushFrom(t.y, t.y == kWallCount ? 0.0 : depth[t.y], rest, slack);
+  if (dx != 0.0 || dy != 0.0) {
+    car.position.x() += dx;
+    car.position.y() += dy;
+    out.moved = true;
   }
-  car.position.x() += dx;
-  car.position.y() += dy;
-  return true;
+  const std::array<double, kWallCount> after = wallDepths(carBox(car, params).aabb(), walls);
+  for (const std::size_t wall : {t.x, t.y}) {
+    if (wall == kWallCount) continue;
+    out.walls[wall].depth = after[wall];
+    out.walls[wall].touching = after[wall] >= 0.0;
+  }
+  return out;
 }
 
 }  // namespace cardemo

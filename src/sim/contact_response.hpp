@@ -2,9 +2,11 @@
 /// Velocity and position response of the player's car against static surfaces.
 
 #include <Eigen/Core>
+#include <array>
 
 #include "geometry/aabb.hpp"
 #include "sim/car.hpp"
+#include "sim/walls.hpp"
 
 namespace cardemo {
 
@@ -25,10 +27,30 @@ void removeClosingVelocity(CarState& car, const Eigen::Vector2d& normal, const C
 /// a position near `position`.
 [[nodiscard]] double pushOutSlack(const Eigen::Vector2d& position);
 
-/// Shifts the car back inside `walls` when its bounds leave them, removing the velocity into each
-/// wall it met; returns true when it moved, and then sets `normal` to the outward normal of the
-/// wall it was pushed off furthest (x first on a tie).
-bool keepInsideWalls(CarState& car, const CarParams& params, const Aabb2& walls,
-                     Eigen::Vector2d& normal);
+/// One wall's part in a step's response.
+struct WallContact {
+  bool touching = false;  ///< The car's box reaches the wall after the response.
+  double closing = 0.0;   ///< Closing speed into the wall before the response, m/s (>= 0).
+  double depth = 0.0;     ///< How far the box reaches past the wall's line after it, metres.
+};
+
+/// The walls' response of one step, in kWallSides order.
+struct WallResponse {
+  std::array<WallContact, kWallCount> walls;  ///< Per wall.
+  bool moved = false;                         ///< The car was pushed back.
+};
+
+/// The walls a car's box touches (depth >= 0) without any response: their closing speeds and
+/// depths (frame 0, where nothing moves).
+[[nodiscard]] WallResponse touchedWalls(const CarState& car, const CarParams& params,
+                                        const Aabb2& walls);
+
+/// The walls' response, as a collider's: each wall the car's box touches (on each axis the west or
+/// south one first) takes the velocity into it (bounce and friction as removeClosingVelocity,
+/// both worked out from the velocity before the walls, so that a corner gives the same answer
+/// whichever wall is "x"), and a box deeper than the resting penetration is pushed back to it, so
+/// that a car held against a wall stays in contact.
+[[nodiscard]] WallResponse respondToWalls(CarState& car, const CarParams& params,
+                                          const Aabb2& walls);
 
 }  // namespace cardemo

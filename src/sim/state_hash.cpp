@@ -24,6 +24,10 @@ std::uint64_t World::stateHash() const {
   // contacts_ is kept sorted by collider index, so this is the touching set in increasing order.
   for (const ActiveContact& c : contacts_) h.add(c.collider);
   ledger_.hashInto(h, frame_);
+  // The driver's state: what each held pedal does and how long the steering key has been held.
+  h.add(static_cast<std::uint64_t>(controls_.up));
+  h.add(static_cast<std::uint64_t>(controls_.down));
+  h.addInt(controls_.steer_steps);
   return h.value();
 }
 

@@ -55,6 +55,12 @@ bool sameBox(const Obb2& a, const Obb2& b) {
          a.axis.y() == b.axis.y() && a.half.x() == b.half.x() && a.half.y() == b.half.y();
 }
 
+// True when `box` lies inside `walls` without touching any of them.
+bool strictlyInside(const Aabb2& box, const Aabb2& walls) {
+  return walls.min.x() < box.min.x() && walls.min.y() < box.min.y() &&
+         box.max.x() < walls.max.x() && box.max.y() < walls.max.y();
+}
+
 bool sameBits(double a, double b) {
   return bitCast<std::uint64_t>(a) == bitCast<std::uint64_t>(b);
 }
@@ -118,7 +124,7 @@ World::World(Scene scene, const WorldSettings& settings)
       colliders_(collidersOf(scene_)),
       grid_(colliders_.bounds()),
       health_(scene_.player.health),
-      ledger_(colliders_.size(), std::llround(settings_.crash_window * settings_.hz)) {
+      ledger_(colliders_.size() + kWallCount, std::llround(settings_.crash_window * settings_.hz)) {
   car_.position = scene_.player.position;
   car_.heading = wrapRadians(radiansFromDegrees(scene_.player.heading_deg));
   car_.direction = unitFromDegrees(scene_.player.heading_deg);
@@ -149,13 +155,24 @@ World::World(Scene scene, const WorldSettings& settings)
   // Frame 0: contacts of the loaded scene are hits at frame 0; the car is not moved.
   detect();
   mergeDetected();
+  if (scene_.bounds) addWallContacts(touchedWalls(car_, params_, *scene_.bounds));
   recordHits();
   car_.surface_normal = surfaceNormal();
 }
 
 const std::string& World::colliderId(std::uint32_t i) const {
   const std::size_t parked = scene_.parked.size();
-  return i < parked ? scene_.parked[i].id : scene_.obstacles[i - parked].id;
+  if (i < parked) return scene_.parked[i].id;
+  if (!isWall(i)) return scene_.obstacles[i - parked].id;
+  return wallId(kWallSides[i - colliders_.size()]);
+}
+
+double World::steerAfter(const InputFrame& keys) const {
+  const InputFrame in = gameOver() ? InputFrame{} : keys;
+  const DriverControls controls = advanceControls(controls_, in, car_.speed);
+  const InputFrame command = pedalCommand(controls, in);
+  return steerStep(params_, car_.steer, steerTarget(params_, car_.speed, command),
+                   steerHeldSeconds(controls, settings_.hz), 1.0 / settings_.hz);
 }
 
 Obb2 World::carBox() const {
@@ -477,15 +494,28 @@ void World::resolveContacts() {
     detectAfterPush(push);
     mergeDetected();
   }
-  // The car's bounds are those of the last detect (it ran at the current pose); inside the walls,
-  // keepInsideWalls would not move the car, so it is not called.
-  wall_contact_ = scene_.bounds && !scene_.bounds->contains(detected_.bounds) &&
-                  keepInsideWalls(car_, params_, *scene_.bounds, wall_normal_);
-  if (wall_contact_) {
-    detect();
-    mergeDetected();
+  // The car's bounds are those of the last detect (it ran at the current pose); strictly inside
+  // the walls it touches none of them.
+  WallResponse walls;
+  if (scene_.bounds && !strictlyInside(detected_.bounds, *scene_.bounds)) {
+    walls = respondToWalls(car_, params_, *scene_.bounds);
+    if (walls.moved) {
+      detect();
+      mergeDetected();
+    }
   }
   dropClearedSlips();
+  addWallContacts(walls);
+}
+
+void World::addWallContacts(const WallResponse& walls) {
+  for (std::size_t k = 0; k < kWallCount; ++k) {
+    const WallContact& w = walls.walls[k];
+    if (!w.touching) continue;
+    contacts_.push_back(
+        {wallIndex(kWallSides[k]), wallNormal(kWallSides[k]), -w.depth, /*slipped=*/false});
+    contact_speed_.push_back(w.closing);
+  }
 }
 
 int World::impactDamage(double speed) const {
@@ -515,15 +545,17 @@ void World::chargeScrape() {
 }
 
 Eigen::Vector2d World::surfaceNormal() const {
-  // The deepest contact's surface (the one push-out resolved first), else the wall met.
-  if (!contacts_.empty()) {
-    const ActiveContact* deepest = &contacts_.front();
+  // The deepest collider contact's surface (the one push-out resolved first), else the deepest
+  // wall's (the first of two equally deep: a west or east wall before a south or north one).
+  const ActiveContact* deepest = nullptr;
+  for (const bool walls : {false, true}) {
     for (const ActiveContact& c : contacts_) {
-      if (c.separation < deepest->separation) deepest = &c;
+      if (isWall(c.collider) != walls) continue;
+      if (deepest == nullptr || c.separation < deepest->separation) deepest = &c;
     }
-    return deepest->normal;
+    if (deepest != nullptr) return deepest->normal;
   }
-  return wall_contact_ ? wall_normal_ : Eigen::Vector2d::Zero();
+  return Eigen::Vector2d::Zero();
 }
 
 void World::recordHits() {
@@ -556,6 +588,8 @@ void World::recordHits() {
 
 void World::step(const InputFrame& input) {
   const InputFrame in = gameOver() ? InputFrame{} : input;
+  // The controls change even when the car cannot: a press's kind, the steering key's hold.
+  controls_ = advanceControls(controls_, in, car_.speed);
   if (resting_ && in == last_input_) {
     // The last step took this same state and input and returned the car unchanged, touching
     // nothing, with its box the one last detected: this step would repeat it bit for bit (detect()
@@ -569,11 +603,17 @@ void World::step(const InputFrame& input) {
   }
   const CarState start = car_;
   last_input_ = in;
-  braking_ = start.speed != 0.0 && (in.handbrake || (in.up && in.down) ||
-                                    (in.down && start.speed > 0.0) || (in.up && start.speed < 0.0));
-  const double steer_target = steerTarget(params_, start.speed, in);
-  const CarState next = integrateCarToward(start, in, params_, 1.0 / settings_.hz, steer_target,
-                                           settings_.schemes.car_step);
+  // A braking press acts as both pedals: it brakes, then holds the car (docs/controls.md).
+  const InputFrame command = pedalCommand(controls_, in);
+  braking_ = start.speed != 0.0 &&
+             (command.handbrake || (command.up && command.down) ||
+              (command.down && start.speed > 0.0) || (command.up && start.speed < 0.0));
+  const double dt = 1.0 / settings_.hz;
+  const double steer_target = steerTarget(params_, start.speed, command);
+  const double steer =
+      steerStep(params_, start.steer, steer_target, steerHeldSeconds(controls_, settings_.hz), dt);
+  const CarState next =
+      integrateCarSteered(start, command, params_, dt, steer, settings_.schemes.car_step);
   ++frame_;
   previous_contacts_.swap(contacts_);
   contacts_.clear();
@@ -599,7 +639,7 @@ void World::step(const InputFrame& input) {
   sliding_ = grip_limited || std::abs(car_.slip) > params_.skid_slip ||
              (in.handbrake && std::abs(car_.speed) > params_.skid_slip);
   resting_ = car_.speed == 0.0 && car_.slip == 0.0 && sameState(car_, start) && contacts_.empty() &&
-             detected_.contacts.empty() && !wall_contact_ && detected_.valid;
+             detected_.contacts.empty() && detected_.valid;
 }
 
 bool StepMotion::detectAt(const CarState& pose) {

@@ -10,10 +10,13 @@
 #include "collision/narrow_phase.hpp"
 #include "collision/static_colliders.hpp"
 #include "sim/car.hpp"
+#include "sim/contact_response.hpp"
 #include "sim/crash_ledger.hpp"
+#include "sim/driver_controls.hpp"
 #include "sim/input_frame.hpp"
 #include "sim/scene.hpp"
 #include "sim/simulation_schemes.hpp"
+#include "sim/walls.hpp"
 
 namespace cardemo {
 
@@ -42,8 +45,8 @@ struct WorldSettings {
 /// A hit: the first frame of contact with one static collider.
 struct HitEvent {
   std::int64_t frame = 0;      ///< Frame at which contact began.
-  std::uint32_t collider = 0;  ///< Index: parked cars first, then obstacles.
-  std::string id;              ///< The collider's id.
+  std::uint32_t collider = 0;  ///< Index: parked cars first, then obstacles, then the walls.
+  std::string id;              ///< The collider's id (a wall's: wallId).
   double speed = 0.0;          ///< Closing speed along the contact normal at impact, m/s.
   int damage = 0;              ///< Health taken: 0 below the threshold or when the crash it
                                ///< belongs to already charged as much.
@@ -73,7 +76,7 @@ struct WorldStats {
 
 /// A contact of the current frame (for the debug overlay and the trace).
 struct ActiveContact {
-  std::uint32_t collider = 0;                         ///< Collider index.
+  std::uint32_t collider = 0;                         ///< Collider index (walls after the rest).
   Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  ///< From the player to the collider.
   double separation = 0.0;                            ///< Before push-out, metres (<= 0).
   bool slipped = false;  ///< A clipped corner the car was pushed sideways past (slipPastCorner).
@@ -124,6 +127,16 @@ class World {
   [[nodiscard]] Obb2 carBox() const;
   /// The input applied at the last step (all keys up once the game is over, or before any step).
   [[nodiscard]] const InputFrame& lastInput() const { return last_input_; }
+  /// The driver's state after the last step: each pedal's press, the steering key's hold.
+  [[nodiscard]] const DriverControls& controls() const { return controls_; }
+  /// The gear: D moving forward or with the throttle driving, R moving backward or with Down
+  /// driving backward, N at a standstill otherwise (gearOf).
+  [[nodiscard]] Gear gear() const { return gearOf(car_.speed, controls_); }
+  /// The wheel angle (radians) the next step would give the car with `keys` held: what a
+  /// controller steering in proportion aims with.
+  [[nodiscard]] double steerAfter(const InputFrame& keys) const;
+  /// The car's parameters in force (the settings' with the scene's body and speed cap).
+  [[nodiscard]] const CarParams& carParams() const { return params_; }
   /// The car's lateral slip speed, m/s, positive to the left of its heading.
   [[nodiscard]] double slipSpeed() const { return car_.slip; }
   /// True when the tyres slide (skid marks, screech): lateral slip above `CarParams::skid_slip`,
@@ -159,8 +172,14 @@ class World {
   [[nodiscard]] const WorldSettings& settings() const { return settings_; }
   /// Static colliders: parked cars (as Obb2) then obstacles, in scene order.
   [[nodiscard]] const StaticColliders& colliders() const { return colliders_; }
-  /// The id of collider i.
+  /// The id of collider i; from colliders().size() on, the walls' (kWallSides order, wallId).
   [[nodiscard]] const std::string& colliderId(std::uint32_t i) const;
+  /// True when index `i` (of a hit or contact) is a wall of the scene's bounds.
+  [[nodiscard]] bool isWall(std::uint32_t i) const { return i >= colliders_.size(); }
+  /// The index a wall's hits and contacts carry.
+  [[nodiscard]] std::uint32_t wallIndex(WallSide side) const {
+    return static_cast<std::uint32_t>(colliders_.size()) + static_cast<std::uint32_t>(side);
+  }
   /// 64-bit FNV-1a over the exact bits of the state, field by field (see docs/formats.md).
   [[nodiscard]] std::uint64_t stateHash() const;
 
@@ -176,10 +195,9 @@ class World {
   int health_ = 100;
   std::int64_t frame_ = 0;
   InputFrame last_input_;
+  DriverControls controls_;
   bool sliding_ = false;
   bool braking_ = false;
-  bool wall_contact_ = false;  // keepInsideWalls moved the car this step
-  Eigen::Vector2d wall_normal_ = Eigen::Vector2d::Zero();  // the wall it met then
   std::vector<HitEvent> hits_;
   std::vector<ActiveContact> contacts_;
   std::vector<std::uint32_t> candidates_;
@@ -247,6 +265,8 @@ class World {
   [[nodiscard]] std::optional<SweptContact> sweepToFirstContact(
       const Obb2& box, const Obb2& end_box, const Eigen::Vector2d& displacement);
   void resolveContacts();
+  // Adds the walls `walls` says the car touches to contacts_.
+  void addWallContacts(const WallResponse& walls);
   void recordHits();
   [[nodiscard]] int impactDamage(double speed) const;
   void chargeScrape();

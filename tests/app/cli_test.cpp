@@ -268,4 +268,29 @@ TEST(Cli, ReplayJsonHasTheClockStartAndWhyNotParked) {
   EXPECT_TRUE(free_drive["not_parked"].is_null());
 }
 
+// `replay --bay-chain` runs free drive's bay chain beside the replay: a car standing in the free
+// bay between two cars of a row parks it after the hold, and the next bay is highlighted.
+TEST(Cli, ReplayBayChainCountsTheBaysParked) {
+  const auto scene = writeTemp("row.json", R"({"format": "cardemo-scene/1", "name": "row",
+    "player": {"x": 10, "y": 0, "heading_deg": 90, "length": 4.5, "width": 1.8},
+    "parked": [{"id": "a", "x": 0, "y": 0, "heading_deg": 90, "length": 4.5, "width": 1.8},
+               {"id": "b", "x": 5, "y": 0, "heading_deg": 90, "length": 4.5, "width": 1.8},
+               {"id": "d", "x": 15, "y": 0, "heading_deg": 90, "length": 4.5, "width": 1.8}]})");
+  const auto replay =
+      writeTemp("row.replay", "cardemo-replay 1\nscene " + scene.string() + "\n70 .\n");
+  const CliResult r = cardemo("replay " + replay.string() + " --bay-chain --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(j.is_object()) << r.out;
+  EXPECT_EQ(j["bay_chain"]["count"], 1) << j.dump();
+  EXPECT_EQ(j["bay_chain"]["bay"], "bay-2") << j.dump();
+  EXPECT_EQ(j["bay_chain"]["bays"], 3) << j.dump();
+  EXPECT_EQ(j["bay_chain"]["clock_frames"], 0) << "the car never moved";
+  EXPECT_NE(r.err.find("bay chain 1 parked of 3 free bays, next bay-2"), std::string::npos)
+      << r.err;
+  // Without the flag, no chain.
+  const CliResult plain = cardemo("replay " + replay.string() + " --json -");
+  EXPECT_FALSE(nlohmann::json::parse(plain.out, nullptr, false).contains("bay_chain"));
+}
+
 }  // namespace

@@ -26,6 +26,24 @@ TEST(InputLatch, ShortPressBetweenSamplesCountsOnce) {
   EXPECT_EQ(latch.sample(), InputFrame{});
 }
 
+TEST(InputLatch, AReleaseAndPressBetweenStepsIsSeenAsAFreshPress) {
+  InputLatch latch;
+  latch.press(DriveKey::kDown);
+  EXPECT_EQ(latch.sample(), (InputFrame{false, true, false, false}));
+  latch.release(DriveKey::kDown);
+  latch.press(DriveKey::kDown);  // within one step: the step runs with Down up, the next with it
+  EXPECT_EQ(latch.sample(), InputFrame{});
+  EXPECT_EQ(latch.sample(), (InputFrame{false, true, false, false}));
+  EXPECT_EQ(latch.sample(), (InputFrame{false, true, false, false}));
+  // Released, pressed and released again between two steps: up for one step, then the tap's step.
+  latch.release(DriveKey::kDown);
+  latch.press(DriveKey::kDown);
+  latch.release(DriveKey::kDown);
+  EXPECT_EQ(latch.sample(), InputFrame{});
+  EXPECT_EQ(latch.sample(), (InputFrame{false, true, false, false}));
+  EXPECT_EQ(latch.sample(), InputFrame{});
+}
+
 TEST(InputLatch, EveryKeyMapsToItsField) {
   const std::pair<DriveKey, InputFrame> cases[] = {
       {DriveKey::kUp, {true, false, false, false}},

@@ -383,12 +383,56 @@ TEST(Hud, SpeedReadsStoppedOnceTheRunIsOver) {
   scene.player.speed = 5.0;
   World world(std::move(scene));
   Camera camera;
-  EXPECT_TRUE(drawn(world, camera).hasText("18 km/h"));
+  EXPECT_TRUE(drawn(world, camera).hasText("18.0 km/h"));
   DrawOptions options;
   options.run_over = true;
   const RecordingCanvas canvas = drawn(world, camera, options);
   EXPECT_TRUE(canvas.hasText("stopped"));
-  EXPECT_FALSE(canvas.hasText("18 km/h"));
+  EXPECT_FALSE(canvas.hasText("18.0 km/h"));
+}
+
+TEST(Hud, SpeedHasItsSignAndOneDecimal) {
+  EXPECT_EQ(speedText(5.0), "18.0 km/h");
+  EXPECT_EQ(speedText(-0.8889), "-3.2 km/h");
+  EXPECT_EQ(speedText(0.0), "0.0 km/h");
+  EXPECT_EQ(speedText(-0.01), "0.0 km/h");  // never "-0.0"
+  EXPECT_EQ(speedText(0.01), "0.0 km/h");
+  Scene scene = sceneWith({});
+  scene.player.speed = -0.8889;
+  World world(std::move(scene));
+  EXPECT_TRUE(drawn(world, Camera{}).hasText("-3.2 km/h"));
+}
+
+// The gear row's value: the text drawn right of the "Gear" label, on its line.
+std::string gearShown(const RecordingCanvas& canvas) {
+  const auto* label = canvas.lastText("Gear");
+  if (label == nullptr) return "?";
+  for (const auto& t : canvas.texts) {
+    if (t.at.y() == label->at.y() && t.at.x() > label->at.x() && t.text.size() == 1) return t.text;
+  }
+  return "?";
+}
+
+TEST(Hud, ShowsTheGearDrivingReversingOrNeutral) {
+  Scene scene = sceneWith({});
+  World world(scene);
+  const Camera camera;
+  EXPECT_EQ(gearShown(drawn(world, camera)), "N");
+  world.step(InputFrame{false, true, false, false});  // Down at a standstill: reverse
+  EXPECT_EQ(gearShown(drawn(world, camera)), "R");
+  for (int i = 0; i < 120; ++i) world.step(InputFrame{false, true, false, false});
+  const RecordingCanvas reversing = drawn(world, camera);
+  EXPECT_EQ(gearShown(reversing), "R");
+  ASSERT_NE(reversing.lastText("km/h"), nullptr);
+  EXPECT_EQ(reversing.lastText("km/h")->text.front(), '-');
+  World forward(scene);
+  forward.step(InputFrame{true, false, false, false});
+  EXPECT_EQ(gearShown(drawn(forward, camera)), "D");
+  // Held at a standstill by Down pressed while moving forward: neutral.
+  for (int i = 0; i < 60; ++i) forward.step(InputFrame{true, false, false, false});
+  for (int i = 0; i < 240; ++i) forward.step(InputFrame{false, true, false, false});
+  ASSERT_EQ(forward.car().speed, 0.0);
+  EXPECT_EQ(gearShown(drawn(forward, camera)), "N");
 }
 
 // One health point and 10 m/s towards a parked car 8 m ahead: run until the game is over.

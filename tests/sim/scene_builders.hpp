@@ -48,7 +48,9 @@ inline Scene parkingLot(std::uint64_t seed) {
   return s;
 }
 
-// A deterministic pseudo-random drive: segments of 20-120 frames holding random keys.
+// A deterministic pseudo-random drive: segments of 20-120 frames holding random keys. The pedals
+// are let go for one frame half way through a segment, so that a long hold still brakes and then
+// drives the other way (a pedal held through the stop would hold the car: docs/controls.md).
 inline std::vector<InputFrame> scriptedDrive(std::uint64_t seed, int frames) {
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> len(20, 120);
@@ -57,7 +59,12 @@ inline std::vector<InputFrame> scriptedDrive(std::uint64_t seed, int frames) {
   while (static_cast<int>(out.size()) < frames) {
     InputFrame in = InputFrame::fromBits(static_cast<std::uint8_t>(keys(rng)));
     if (!in.down) in.up = true;  // mostly moving
-    for (int i = len(rng); i > 0 && static_cast<int>(out.size()) < frames; --i) out.push_back(in);
+    const int n = len(rng);
+    for (int i = n; i > 0 && static_cast<int>(out.size()) < frames; --i) {
+      InputFrame step = in;
+      if (i == n / 2) step.up = step.down = false;
+      out.push_back(step);
+    }
   }
   return out;
 }

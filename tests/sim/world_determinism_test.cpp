@@ -49,8 +49,9 @@ TEST(WorldDeterminism, HashOfAFreshWorldIsFnv1aOfItsFields) {
   };
   const std::uint64_t one = 0x3ff0000000000000ull;  // bits of 1.0
   // frame, x, y, heading, direction x, y, speed, steer, slip, surface normal x, y, health, hits,
-  // then (no contacts) scrape frames, scrape damage, crashes (and no open crash window).
-  const std::uint64_t fields[] = {0, 0, 0, 0, one, 0, 0, 0, 0, 0, 0, 100, 0, 0, 0, 0};
+  // then (no contacts) scrape frames, scrape damage, crashes (and no open crash window), then the
+  // controls: Up's press, Down's press (both released) and the steering hold.
+  const std::uint64_t fields[] = {0, 0, 0, 0, one, 0, 0, 0, 0, 0, 0, 100, 0, 0, 0, 0, 0, 0, 0};
   for (const std::uint64_t v : fields) feed(v);
   EXPECT_EQ(w.stateHash(), h) << hashHex(w.stateHash()) << " vs " << hashHex(h);
 }

@@ -136,20 +136,24 @@ TEST(World, GameOverIgnoresInputAndHealthNeverGoesNegative) {
   EXPECT_EQ(world.hits().size(), hits);
 }
 
-TEST(World, WallsStopTheCarWithoutAHit) {
+TEST(World, WallsStopTheCarAndCountAsHits) {
   Scene scene = sceneWith({});
   scene.bounds = Aabb2{{-20.0, -10.0}, {20.0, 10.0}};
   World world(scene);
+  // A wall is touched at the resting penetration, as a collider is (0.1 mm here).
+  const double rest = 1e-4 + 1e-9;
   for (int f = 0; f < 120 * 8; ++f) {
     world.step(f < 600 ? kUp : InputFrame{true, false, true, false});
     const Aabb2 box = world.carBox().aabb();
-    ASSERT_LE(box.max.x(), 20.0 + 1e-9) << "frame " << f;
-    ASSERT_GE(box.min.x(), -20.0 - 1e-9);
-    ASSERT_LE(box.max.y(), 10.0 + 1e-9);
-    ASSERT_GE(box.min.y(), -10.0 - 1e-9);
+    ASSERT_LE(box.max.x(), 20.0 + rest) << "frame " << f;
+    ASSERT_GE(box.min.x(), -20.0 - rest);
+    ASSERT_LE(box.max.y(), 10.0 + rest);
+    ASSERT_GE(box.min.y(), -10.0 - rest);
   }
-  EXPECT_TRUE(world.hits().empty());
-  EXPECT_EQ(world.health(), 100);
+  ASSERT_FALSE(world.hits().empty());
+  for (const HitEvent& h : world.hits()) EXPECT_EQ(h.id.rfind("bounds-", 0), 0u) << h.id;
+  EXPECT_EQ(world.hits()[0].id, "bounds-east");
+  EXPECT_LT(world.health(), 100);
   EXPECT_NEAR(world.carBox().aabb().max.x(), 20.0, 0.5);  // pressed against the right wall
 }
 
@@ -209,8 +213,9 @@ TEST(World, NarrowPhaseRunsOnlyOnCandidates) {
   for (const InputFrame& in : test::scriptedDrive(5, 1200)) empty.step(in);
   EXPECT_EQ(empty.stats().narrowphase_tests, 0);
   EXPECT_EQ(empty.stats().broadphase_candidates, 0);
-  // Every moved frame still asks the broad phase, mostly answered from the grown box.
-  EXPECT_GT(empty.stats().broadphase_queries + empty.stats().reused_queries, 1000);
+  // Every moved frame still asks the broad phase, mostly answered from the grown box (the drive
+  // stands still now and then: a pedal held through a stop holds the car).
+  EXPECT_GT(empty.stats().broadphase_queries + empty.stats().reused_queries, 900);
   EXPECT_GT(empty.stats().reused_queries, 10 * empty.stats().broadphase_queries);
 
   World lot(test::parkingLot(3));
@@ -246,7 +251,10 @@ TEST(World, RenderingAccessorsFollowTheInput) {
   EXPECT_TRUE(world.braking());
   EXPECT_FALSE(world.reversing());
   while (world.car().speed > 0.0) world.step(brake);
-  for (int f = 0; f < 60; ++f) world.step(brake);  // stopped, so the same key reverses
+  for (int f = 0; f < 60; ++f) world.step(brake);  // held through the stop: it holds the car
+  EXPECT_FALSE(world.reversing());
+  world.step(kNone);
+  for (int f = 0; f < 60; ++f) world.step(brake);  // a fresh press at a standstill reverses
   EXPECT_TRUE(world.reversing());
   EXPECT_FALSE(world.braking());
   world.step(kUp);  // throttle against the reverse roll brakes
@@ -267,7 +275,8 @@ TEST(World, SlidingWhenTheGripLimitsTheTurn) {
   ASSERT_LT(gripLock(p, 20.0), steeringLock(p, 20.0));
   at_speed.step(up_left);
   EXPECT_FALSE(at_speed.sliding()) << "the wheel has not reached the grip lock yet";
-  for (int f = 0; f < 10; ++f) at_speed.step(up_left);  // 2.5 rad/s reaches 0.06 rad in 3 frames
+  // The keyboard ramp (0.4 rad/s, growing by 1.3 rad/s^2) reaches the 0.06 rad lock in 17 frames.
+  for (int f = 0; f < 30; ++f) at_speed.step(up_left);
   EXPECT_TRUE(at_speed.sliding());
   at_speed.step(kUp);
   EXPECT_FALSE(at_speed.sliding()) << "no steering, no grip limit";

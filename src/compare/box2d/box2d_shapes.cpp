@@ -53,4 +53,23 @@ Box2dVerdict box2dCollide(const Box2dShape& a, const Box2dShape& b) {
   return v;
 }
 
+Box2dEdge box2dEdge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, float skin) {
+  Box2dEdge e;
+  e.shape.SetTwoSided(b2Vec2(static_cast<float>(a.x()), static_cast<float>(a.y())),
+                      b2Vec2(static_cast<float>(b.x()), static_cast<float>(b.y())));
+  e.shape.m_radius = skin;
+  return e;
+}
+
+Box2dVerdict box2dCollide(const Box2dShape& polygon, const Box2dEdge& edge) {
+  b2Transform identity;
+  identity.SetIdentity();
+  Box2dVerdict v;
+  v.overlap = b2TestOverlap(&edge.shape, 0, &polygon.shape, 0, identity, polygon.xf);
+  b2Manifold manifold;
+  b2CollideEdgeAndPolygon(&manifold, &edge.shape, identity, &polygon.shape, polygon.xf);
+  v.points = manifold.pointCount;
+  return v;
+}
+
 }  // namespace cardemo::compare

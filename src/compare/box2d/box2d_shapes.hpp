@@ -5,6 +5,7 @@
 
 #include <box2d/b2_collision.h>
 #include <box2d/b2_common.h>
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_math.h>
 #include <box2d/b2_polygon_shape.h>
 
@@ -39,7 +40,18 @@ void setBox2dPose(Box2dShape& shape, const Obb2& box);
 /// transform, skin `skin` metres. Box2D welds vertices closer than 0.0025 m (its own hull rule).
 [[nodiscard]] Box2dShape box2dPolygon(const ConvexPolygon& polygon, float skin);
 
+/// A two-sided edge (a wall of the scene's bounds), as a Box2D user builds a boundary.
+struct Box2dEdge {
+  b2EdgeShape shape;  ///< SetTwoSided on the float world end points; identity transform.
+};
+
+/// An edge from `a` to `b` (world metres, taken in float) with skin `skin` metres.
+[[nodiscard]] Box2dEdge box2dEdge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, float skin);
+
 /// Both of Box2D's verdicts for the pair (a, b).
 [[nodiscard]] Box2dVerdict box2dCollide(const Box2dShape& a, const Box2dShape& b);
+
+/// Both verdicts for a polygon against an edge: b2TestOverlap and b2CollideEdgeAndPolygon.
+[[nodiscard]] Box2dVerdict box2dCollide(const Box2dShape& polygon, const Box2dEdge& edge);
 
 }  // namespace cardemo::compare

@@ -9,6 +9,7 @@
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
 #include "geometry/obb3.hpp"
+#include "sim/walls.hpp"
 
 namespace cardemo::exact {
 
@@ -29,6 +30,11 @@ struct ExactResult {
 /// the box is not rounded to double corners first: a 1 cm box far from the origin would get edge
 /// directions off by ~1e-7 rad, which is 2e-5 m over a 200 m gap.
 [[nodiscard]] ExactResult collideObbPolygon(const Obb2& box, const ConvexPolygon& polygon);
+
+/// Exact verdict for a box against one wall of `walls` (the half-plane beyond that edge of the
+/// bounds): the gap from the box's furthest corner to the wall's line, which the box touches when
+/// the gap is <= 0.
+[[nodiscard]] ExactResult collideObbWall(const Obb2& box, const Aabb2& walls, WallSide side);
 
 /// Exact SAT verdict for two 3D boxes: 6 face normals (cross products of the stored edge columns)
 /// and the 9 edge-edge cross products, skipping exactly-zero ones (exact, see obb3.hpp).
