@@ -37,17 +37,33 @@ std::string compareFrame(const World& a, const World& b, const RigidTransform& t
   const std::string at = "frame " + std::to_string(a.frame()) + ": ";
   const auto& ha = a.hits();
   const auto& hb = b.hits();
-  for (; hits_compared < std::max(ha.size(), hb.size()); ++hits_compared) {
-    const std::size_t k = hits_compared;
-    if (k >= ha.size()) return at + "hits: original none, image " + hitText(hb[k]);
-    if (k >= hb.size()) return at + "hits: original " + hitText(ha[k]) + ", image none";
-    if (ha[k].frame != hb[k].frame || ha[k].id != hb[k].id || ha[k].damage != hb[k].damage ||
-        !(std::abs(ha[k].speed - hb[k].speed) <= tol.speed)) {
-      return at + "hit " + std::to_string(k) + ": original " + hitText(ha[k]) + ", image " +
-             hitText(hb[k]);
-    }
-    worst.speed = std::max(worst.speed, std::abs(ha[k].speed - hb[k].speed));
+  if (ha.size() != hb.size()) {
+    const std::size_t k = std::min(ha.size(), hb.size());
+    return at + "hits: original " + (k < ha.size() ? hitText(ha[k]) : "none") + ", image " +
+           (k < hb.size() ? hitText(hb[k]) : "none");
   }
+  // A frame's hits are listed by collider index, and the image of a wall may sort before
+  // another wall where the original sorted after it (two walls in a corner): compare the new
+  // hits as a set, each original hit by its collider's image.
+  std::vector<HitEvent> new_a(ha.begin() + static_cast<std::ptrdiff_t>(hits_compared), ha.end());
+  std::vector<HitEvent> new_b(hb.begin() + static_cast<std::ptrdiff_t>(hits_compared), hb.end());
+  for (HitEvent& h : new_a) h.id = t.colliderImage(h.id);
+  const auto by_frame_and_id = [](const HitEvent& x, const HitEvent& y) {
+    return std::tie(x.frame, x.id) < std::tie(y.frame, y.id);
+  };
+  std::sort(new_a.begin(), new_a.end(), by_frame_and_id);
+  std::sort(new_b.begin(), new_b.end(), by_frame_and_id);
+  for (std::size_t k = 0; k < new_a.size(); ++k) {
+    const HitEvent& x = new_a[k];
+    const HitEvent& y = new_b[k];
+    if (x.frame != y.frame || x.id != y.id || x.damage != y.damage ||
+        !(std::abs(x.speed - y.speed) <= tol.speed)) {
+      return at + "hit " + std::to_string(hits_compared + k) + ": original (collider mapped) " +
+             hitText(x) + ", image " + hitText(y);
+    }
+    worst.speed = std::max(worst.speed, std::abs(x.speed - y.speed));
+  }
+  hits_compared = ha.size();
   if (a.health() != b.health()) {
     return at + "health: original " + std::to_string(a.health()) + ", image " +
            std::to_string(b.health());

@@ -15,6 +15,7 @@
 
 #include "drives.hpp"
 #include "io/scene_json.hpp"
+#include "sim/contact_response.hpp"
 #include "sim/world.hpp"
 #include "stress_scale.hpp"
 
@@ -68,8 +69,11 @@ std::string checkState(const World& w, double max_forward, double max_reverse) {
   if (w.scene().bounds) {
     const Aabb2 box = w.carBox().aabb();
     const Aabb2& walls = *w.scene().bounds;
-    // Walls clamp the car's bounds exactly; allow the rounding of that shift.
-    const double slack = 4.0 * kEps * (walls.max - walls.min).cwiseAbs().maxCoeff();
+    // Walls push a car that went deeper back to the resting penetration (contact_response.hpp),
+    // and a turn at the wall may take it slightly deeper before the next push: allow twice that,
+    // plus the rounding of the shift.
+    const double slack = 4.0 * kEps * (walls.max - walls.min).cwiseAbs().maxCoeff() +
+                         2.0 * restingPenetration(w.car().position);
     if (!(box.min.x() >= walls.min.x() - slack && box.min.y() >= walls.min.y() - slack &&
           box.max.x() <= walls.max.x() + slack && box.max.y() <= walls.max.y() + slack)) {
       why << "car bounds " << box.min.transpose() << " .. " << box.max.transpose()

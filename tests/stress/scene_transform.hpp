@@ -2,8 +2,10 @@
 /// Rigid transforms of whole scenes (translation, rotation, mirror) for the invariance tests.
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/angle.hpp"
@@ -28,6 +30,23 @@ struct RigidTransform {
     const Eigen::Vector2d r = rotation();
     const double y = mirror ? -v.y() : v.y();
     return {r.x() * v.x() - r.y() * y, r.y() * v.x() + r.x() * y};
+  }
+  /// Image of a hit's collider id: a wall (`bounds-west`, ...) becomes the wall its outward
+  /// normal turns into; any other id is its own image.
+  [[nodiscard]] std::string colliderImage(const std::string& id) const {
+    static const std::array<std::pair<const char*, Eigen::Vector2d>, 4> walls = {
+        {{"bounds-west", {-1.0, 0.0}},
+         {"bounds-east", {1.0, 0.0}},
+         {"bounds-south", {0.0, -1.0}},
+         {"bounds-north", {0.0, 1.0}}}};
+    for (const auto& [name, normal] : walls) {
+      if (id != name) continue;
+      const Eigen::Vector2d image = direction(normal);
+      for (const auto& [other, other_normal] : walls) {
+        if ((image - other_normal).norm() < 1e-9) return other;
+      }
+    }
+    return id;
   }
   /// Image of a point.
   [[nodiscard]] Eigen::Vector2d point(const Eigen::Vector2d& p) const {
