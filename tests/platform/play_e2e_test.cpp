@@ -1,7 +1,7 @@
 // End-to-end: `cardemo play` under Xvfb driven by xdotool; the recording must replay headless to
 // the same outcome, a game stopped by SIGINT must leave a valid recording, and level 1 chosen in
-// the scene picker can be driven to PARKED (nothing left in the bay readout), then N opens
-// level 2, where Down at a standstill reverses, Esc returns to the picker and Esc there
+// the scene picker can be driven to PARKED (gear N, nothing left in the bay readout), then N opens
+// level 2, where Down at a standstill reverses (gear R), Esc returns to the picker and Esc there
 // quits. The help holds the simulation, a restart after GAME
 // OVER keeps both attempts' recordings, WASD and Space drive, a replay played in the window
 // hands over only when the player drives, and a replay watched to PARKED saves no best score.
@@ -608,8 +608,8 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   ASSERT_TRUE(waitForTitle("level-2-reverse"))
       << "N did not open level 2: " << slurp(dir_ / "play.log");
   std::this_thread::sleep_for(300ms);
-  // In level 2, Down pressed at a standstill reverses at once: the speed is negative when the
-  // level is left (the summary holds what the HUD showed last).
+  // In level 2, Down pressed at a standstill reverses at once: the HUD's gear reads R and the
+  // speed is negative when the level is left (the summary holds what the HUD showed last).
   shell(display_, "xdotool key p");
   std::this_thread::sleep_for(500ms);
   ASSERT_TRUE(hold("Down", 60));
@@ -631,13 +631,15 @@ TEST_F(LevelE2e, PickLevelOneDriveItToParkedThenReplayHeadless) {
   EXPECT_EQ(live["clock_start"], idle) << live.dump();
   EXPECT_EQ(live["score"]["frames"], golden_parked) << live.dump();
   EXPECT_GE(live["score"]["stars"].get<int>(), 2);
-  // Parked: standing, and the bay's readout has nothing left to ask.
+  // Parked: standing with no pedal held, gear N, and the bay's readout has nothing left to ask.
+  EXPECT_EQ(live["final"]["gear"], "N") << live.dump();
   EXPECT_EQ(live["final"]["speed"], 0.0) << live.dump();
   EXPECT_EQ(live["not_parked"], nlohmann::json::array()) << live.dump();
   // The last game (level 2, left with Esc) wrote its own summary.
   const nlohmann::json last = loadJson(slurp(json));
   ASSERT_TRUE(last.is_object());
   EXPECT_EQ(last["scene"], "level-2-reverse");
+  EXPECT_EQ(last["final"]["gear"], "R") << last.dump();
   EXPECT_LT(last["final"]["speed"].get<double>(), 0.0) << last.dump();
   // Not parked: the readout says how far the bay is, in the window's words.
   ASSERT_TRUE(last["not_parked"].is_array()) << last.dump();
