@@ -11,6 +11,11 @@
 namespace cardemo {
 namespace {
 
+// |sin| of the angle between the heading and a surface's tangent below which the surface counts as
+// square to the heading (slideCar): far above the ulps of two unit vectors, far below any angle a
+// car meets a surface at on purpose (1e-9 rad).
+constexpr double kSquareToHeading = 1e-9;
+
 // Moves `value` toward `target` by at most `max_delta`, landing exactly on the target.
 double approach(double value, double target, double max_delta) {
   if (value < target) return std::min(value + max_delta, target);
@@ -69,7 +74,10 @@ CarState slideCar(CarState next, const CarState& steered, bool handbrake, const 
   const Eigen::Vector2d& n = next.surface_normal;
   const double lateral_n = next.direction.x() * n.y() - next.direction.y() * n.x();
   const double change = slip - next.slip;
-  if (change * lateral_n > 0.0) {
+  // A surface square to the heading (the car's own face against it, whose normal is the car's
+  // axis to a few ulps) leaves the normal velocity to the speed alone: the decay cannot turn it,
+  // and the sign of lateral_n there is rounding, which a rotated scene rounds the other way.
+  if (std::abs(lateral_n) > kSquareToHeading && change * lateral_n > 0.0) {
     const double forward_n = next.direction.x() * n.x() + next.direction.y() * n.y();
     const double along = -next.speed * forward_n / lateral_n;
     const double to_along = along - next.slip;

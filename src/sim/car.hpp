@@ -105,8 +105,9 @@ struct CarState {
 /// turn becomes slip); the position moves by the slip over dt; the slip then decays towards 0 at
 /// the grip rate (handbrake_grip * grip under the handbrake), except that against a surface
 /// (`surface_normal`) a decay that turns the velocity into it stops where the velocity runs along
-/// it, or does not start when it already points into it. A state without slip and without the
-/// handbrake is returned unchanged.
+/// it, or does not start when it already points into it (a surface square to the heading, within
+/// 1e-9 rad, holds nothing: the decay cannot turn the velocity there). A state without slip and
+/// without the handbrake is returned unchanged.
 [[nodiscard]] CarState slideCar(CarState next, const CarState& steered, bool handbrake,
                                 const CarParams& params, double dt);
 
