@@ -87,12 +87,21 @@ nlohmann::json summaryOf(const World& world, const ParkingChallenge* goal,
   return j;
 }
 
+std::string gatesText(const GateCourse& gates) {
+  if (gates.size() == 0) return "";
+  std::string out = "gates     " + std::to_string(gates.passed()) + " of " +
+                    std::to_string(gates.size()) + " passed";
+  if (gates.misses() > 0) out += ", " + std::to_string(gates.misses()) + " missed";
+  return out + "\n";
+}
+
 std::string goalText(const ParkingChallenge* challenge) {
   if (challenge == nullptr) return "";
+  const std::string gates = gatesText(challenge->gates());
   const std::optional<std::int64_t> start = challenge->clockStart();
   if (const std::optional<ParkingScore> score = challenge->score()) {
     // The clock runs from the car's first move (frame 0 when it never moved).
-    return "parked    frame " + std::to_string(*challenge->parkedFrame()) + ": " +
+    return gates + "parked    frame " + std::to_string(*challenge->parkedFrame()) + ": " +
            fixedText(score->seconds, 2) + " s from frame " + std::to_string(start.value_or(0)) +
            ", damage " + std::to_string(score->damage) + ", " + std::to_string(score->stars) +
            (score->stars == 1 ? " star\n" : " stars\n");
@@ -101,7 +110,7 @@ std::string goalText(const ParkingChallenge* challenge) {
   for (const std::string& reason : notParkedReasons(*challenge)) {
     why += (why.empty() ? "" : ", ") + reason;
   }
-  return "parked    never (" + why + ")\n";
+  return gates + "parked    never (" + why + ")\n";
 }
 
 int runReplayCommand(const ReplayOptions& options) {

@@ -23,6 +23,7 @@
 #include "io/json_with_lines.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_rules.hpp"
+#include "sim/gate_course.hpp"
 
 namespace cardemo {
 namespace {
@@ -59,14 +60,15 @@ constexpr Keys<5> kPoseKeys = {"x", "y", "heading_deg", "length", "width"};
 enum PoseKey { kXKey, kYKey, kHeadingKey, kLengthKey, kWidthKey };
 constexpr Keys<2> kBoundsKeys = {"min", "max"};
 constexpr Keys<2> kObstacleKeys = {"id", "points"};
-constexpr Keys<8> kGoalKeys = {"bay",
+constexpr Keys<9> kGoalKeys = {"bay",
                                "position_tolerance",
                                "heading_tolerance_deg",
                                "either_direction",
                                "max_speed",
                                "hold_time",
                                "par_time",
-                               "time_limit"};
+                               "time_limit",
+                               "gates"};
 enum GoalKey {
   kBayKey,
   kPositionToleranceKey,
@@ -75,8 +77,11 @@ enum GoalKey {
   kGoalMaxSpeedKey,
   kHoldTimeKey,
   kParTimeKey,
-  kTimeLimitKey
+  kTimeLimitKey,
+  kGatesKey
 };
+constexpr Keys<4> kGateKeys = {"name", "line", "box", "direction_deg"};
+enum GateKey { kGateNameKey, kGateLineKey, kGateBoxKey, kGateDirectionKey };
 constexpr Keys<3> kLevelKeys = {"order", "title", "task"};
 constexpr Keys<4> kMarkingKeys = {"type", "from", "to", "width"};
 
@@ -469,6 +474,8 @@ class FastSceneReader {
               if (!positive(f, kMaxGoalTime, x)) return false;
               goal.par_time = x;
               return true;
+            case kGatesKey:
+              return readGates(f, goal.gates);
             default:
               if (!positive(f, kMaxGoalTime, x)) return false;
               goal.time_limit = x;
@@ -481,6 +488,62 @@ class FastSceneReader {
     if (has_hold_time && goal.time_limit && goal.hold_time >= *goal.time_limit) return false;
     scene_.goal = goal;
     return true;
+  }
+
+  bool readGates(od::value& v, std::vector<Gate>& gates) {
+    const auto reserve = [&gates](std::size_t count) {
+      gates.reserve(count);
+      return count <= kMaxGates;
+    };
+    return readArray(v, reserve, [&](od::value& item) {
+      Gate gate;
+      std::optional<double> direction_deg;
+      Eigen::Vector2d from;
+      Eigen::Vector2d to;
+      Pose box;
+      // The direction is checked against the line, which may come after it.
+      const std::uint32_t seen_line = 1u << kGateLineKey;
+      std::uint32_t shape = 0;
+      if (!readObject(item, kGateKeys, 1u << kGateNameKey, [&](int key, od::value& f) {
+            switch (key) {
+              case kGateNameKey: {
+                std::string_view name;
+                if (!readString(f, name)) return false;
+                gate.name.assign(name);
+                return gateNameProblem(name) == nullptr;
+              }
+              case kGateLineKey: {
+                shape |= seen_line;
+                std::size_t k = 0;
+                return readArray(
+                    f, [](std::size_t count) { return count == 2; },
+                    [&](od::value& point) { return readPoint(point, k++ == 0 ? from : to); });
+              }
+              case kGateBoxKey:
+                shape |= 1u << kGateBoxKey;
+                return readPose(f, box);
+              default: {
+                double degrees = 0.0;
+                if (!readNumber(f, degrees) || coordinateProblem(degrees) != nullptr) return false;
+                direction_deg = degrees;
+                return true;
+              }
+            }
+          })) {
+        return false;
+      }
+      if (shape == seen_line) {
+        if (from == to) return false;
+        setLineGate(gate, from, to);
+      } else if (shape == 1u << kGateBoxKey) {
+        setBoxGate(gate, box.center, box.heading_deg, box.length, box.width);
+      } else {
+        return false;
+      }
+      if (direction_deg && setGateDirection(gate, *direction_deg) != nullptr) return false;
+      gates.push_back(std::move(gate));
+      return true;
+    });
   }
 
   bool readLevel(od::value& v) {

@@ -11,6 +11,7 @@
 #include "io/json_with_lines.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_rules.hpp"
+#include "sim/gate_course.hpp"
 
 namespace cardemo {
 namespace {
@@ -303,7 +304,7 @@ class SceneReader {
     if (!isKind(n, Kind::kObject, path) ||
         !onlyKeys(n,
                   {"bay", "position_tolerance", "heading_tolerance_deg", "either_direction",
-                   "max_speed", "hold_time", "par_time", "time_limit"},
+                   "max_speed", "hold_time", "par_time", "time_limit", "gates"},
                   path)) {
       return false;
     }
@@ -344,6 +345,79 @@ class SceneReader {
       goal.hold_time = h->number;
       if (goal.time_limit && goal.hold_time >= *goal.time_limit) {
         return fail(h->line, "goal.hold_time: must be less than goal.time_limit");
+      }
+    }
+    if (const Node* gates = n.find("gates")) {
+      if (!readGates(*gates, goal.gates)) return false;
+    }
+    return true;
+  }
+
+  bool readGates(const Node& n, std::vector<Gate>& gates) {
+    if (!isKind(n, Kind::kArray, "goal.gates")) return false;
+    if (n.items.size() > kMaxGates) {
+      return fail(n.line, "goal.gates: at most " + std::to_string(kMaxGates) + " gates, found " +
+                              std::to_string(n.items.size()));
+    }
+    gates.reserve(n.items.size());
+    for (std::size_t i = 0; i < n.items.size(); ++i) {
+      Gate gate;
+      if (!readGate(n.items[i], "goal.gates[" + std::to_string(i) + "]", gate)) return false;
+      gates.push_back(std::move(gate));
+    }
+    return true;
+  }
+
+  bool readGate(const Node& n, const std::string& path, Gate& gate) {
+    if (!isKind(n, Kind::kObject, path) ||
+        !onlyKeys(n, {"name", "line", "box", "direction_deg"}, path)) {
+      return false;
+    }
+    const Node* name = required(n, "name", path);
+    if (name == nullptr || !isKind(*name, Kind::kString, path + ".name") ||
+        !check(*name, path + ".name", gateNameProblem(name->text))) {
+      return false;
+    }
+    gate.name = name->text;
+    const Node* line = n.find("line");
+    const Node* box = n.find("box");
+    if ((line == nullptr) == (box == nullptr)) {
+      return fail(n.line, path + ": needs exactly one of \"line\" and \"box\"");
+    }
+    if (line != nullptr) {
+      const std::string line_path = path + ".line";
+      if (!isKind(*line, Kind::kArray, line_path)) return false;
+      if (line->items.size() != 2) {
+        return fail(line->line, line_path + ": expected [[x, y], [x, y]], found " +
+                                    std::to_string(line->items.size()) + " points");
+      }
+      Eigen::Vector2d from;
+      Eigen::Vector2d to;
+      if (!point(line->items[0], line_path + "[0]", from) ||
+          !point(line->items[1], line_path + "[1]", to)) {
+        return false;
+      }
+      if (from == to) return fail(line->line, line_path + ": the two ends must differ");
+      setLineGate(gate, from, to);
+    } else {
+      const std::string box_path = path + ".box";
+      Eigen::Vector2d center;
+      double heading = 0.0;
+      double length = 0.0;
+      double width = 0.0;
+      if (!isKind(*box, Kind::kObject, box_path) ||
+          !onlyKeys(*box, {"x", "y", "heading_deg", "length", "width"}, box_path) ||
+          !readPose(*box, box_path, center, heading, length, width)) {
+        return false;
+      }
+      setBoxGate(gate, center, heading, length, width);
+    }
+    if (const Node* d = n.find("direction_deg")) {
+      const std::string direction_path = path + ".direction_deg";
+      double degrees = 0.0;
+      if (!number(*d, direction_path, Rule::kCoordinate, degrees) ||
+          !check(*d, direction_path, setGateDirection(gate, degrees))) {
+        return false;
       }
     }
     return true;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "geometry/angle.hpp"
+
 namespace cardemo::scene_rules {
 namespace {
 
@@ -14,6 +16,10 @@ bool isControl(char c) {
 bool hasControl(std::string_view text) {
   return std::any_of(text.begin(), text.end(), isControl);
 }
+
+// A directed line gate must be crossable: its direction at least 10 degrees off the line
+// (sin 10 deg), or "towards one side" means nothing.
+constexpr double kMinGateCrossingSine = 0.17364817766693033;
 
 }  // namespace
 
@@ -93,6 +99,40 @@ const char* levelTaskProblem(std::string_view task) {
   if (task.empty() || task.size() > kMaxTaskBytes || hasControl(task)) {
     return "must be 1 to 100 bytes without control characters";
   }
+  return nullptr;
+}
+
+const char* gateNameProblem(std::string_view name) {
+  if (name.empty() || name.size() > kMaxGateNameBytes || hasControl(name)) {
+    return "must be 1 to 40 bytes without control characters";
+  }
+  return nullptr;
+}
+
+void setLineGate(Gate& gate, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  gate.kind = Gate::Kind::kLine;
+  gate.from = from;
+  gate.to = to;
+  gate.center = 0.5 * (from + to);
+}
+
+void setBoxGate(Gate& gate, const Eigen::Vector2d& center, double heading_deg, double length,
+                double width) {
+  gate.kind = Gate::Kind::kBox;
+  gate.center = center;
+  gate.corners = Obb2::fromDegrees(center, heading_deg, length, width).corners();
+}
+
+const char* setGateDirection(Gate& gate, double direction_deg) {
+  const Eigen::Vector2d dir = unitFromDegrees(direction_deg);
+  gate.direction = dir;
+  if (gate.kind != Gate::Kind::kLine) return nullptr;
+  const Eigen::Vector2d along = (gate.to - gate.from).normalized();
+  const double sine = along.x() * dir.y() - along.y() * dir.x();
+  if (!(std::abs(sine) >= kMinGateCrossingSine)) {
+    return "must cross the line (at least 10 degrees off it)";
+  }
+  gate.side = sine > 0.0 ? 1 : -1;
   return nullptr;
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "sim/scene.hpp"
+
 namespace cardemo::scene_rules {
 
 /// The exact `format` of a scene file.
@@ -32,6 +34,8 @@ inline constexpr std::size_t kMaxTaskBytes = 100;
 inline constexpr double kMaxMarkingWidth = 10.0;
 /// Largest goal heading tolerance, degrees.
 inline constexpr double kMaxHeadingTolerance = 180.0;
+/// Longest gate name, bytes.
+inline constexpr std::size_t kMaxGateNameBytes = 40;
 
 /// The name of a scene file without one: its file's stem, or "scene" for standard input.
 [[nodiscard]] std::string defaultSceneName(const std::string& filename);
@@ -58,5 +62,15 @@ inline constexpr double kMaxHeadingTolerance = 180.0;
 [[nodiscard]] const char* levelTitleProblem(std::string_view title);
 /// A level's task: 1 to 100 bytes, no control characters.
 [[nodiscard]] const char* levelTaskProblem(std::string_view task);
+/// A gate's name: 1 to 40 bytes, no control characters.
+[[nodiscard]] const char* gateNameProblem(std::string_view name);
+/// Makes `gate` a line gate from `from` to `to` (which must differ).
+void setLineGate(Gate& gate, const Eigen::Vector2d& from, const Eigen::Vector2d& to);
+/// Makes `gate` a box gate: centre, heading in degrees, length along it and width across.
+void setBoxGate(Gate& gate, const Eigen::Vector2d& center, double heading_deg, double length,
+                double width);
+/// Sets the direction of travel of a line or box gate (set first); for a line gate, what is wrong
+/// when the direction runs within 10 degrees of the line.
+[[nodiscard]] const char* setGateDirection(Gate& gate, double direction_deg);
 
 }  // namespace cardemo::scene_rules

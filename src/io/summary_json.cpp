@@ -32,6 +32,18 @@ nlohmann::json scoreJson(const ParkingScore& score) {
           {"stars", score.stars}};
 }
 
+nlohmann::json gatesJson(const GateCourse& course) {
+  nlohmann::json names = nlohmann::json::array();
+  for (std::size_t i = 0; i < course.passed(); ++i) names.push_back(course.gates()[i].name);
+  nlohmann::json next = nullptr;
+  if (const Gate* gate = course.nextGate()) next = gate->name;
+  return {{"total", course.size()},
+          {"passed", course.passed()},
+          {"names", names},
+          {"next", next},
+          {"misses", course.misses()}};
+}
+
 nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge) {
   nlohmann::json hits = nlohmann::json::array();
   for (const HitEvent& h : world.hits()) {
@@ -47,7 +59,9 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
   nlohmann::json score = nullptr;
   nlohmann::json clock_start = nullptr;
   nlohmann::json not_parked = nullptr;
+  nlohmann::json gates = nullptr;
   if (challenge != nullptr) {
+    gates = gatesJson(challenge->gates());
     if (challenge->parkedFrame()) {
       parked = *challenge->parkedFrame();
       score = scoreJson(*challenge->score());
@@ -88,6 +102,7 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
       {"timed_out", challenge != nullptr && challenge->timedOut()},
       {"clock_start", clock_start},
       {"not_parked", not_parked},
+      {"gates", gates},
   };
 }
 

@@ -57,23 +57,29 @@ ParkingChallenge::ParkingChallenge(const Goal& goal, double hz, int start_health
       hz_(hz),
       start_health_(start_health),
       limit_frames_(limitFrames(goal, hz)),
-      hold_frames_(holdFrames(goal, hz)) {}
+      hold_frames_(holdFrames(goal, hz)),
+      gates_(goal.gates) {}
 
 void ParkingChallenge::observe(const World& world) {
   if (over()) return;
   const CarState& car = world.car();
   if (!start_position_) {
     start_position_ = car.position;
-  } else if (!clock_start_ && car.position != *start_position_) {
-    clock_start_ = frame_;  // the last frame observed at the start: the step from it moved the car
+    gates_.start(car.position);
+  } else {
+    if (!clock_start_ && car.position != *start_position_) {
+      clock_start_ = frame_;  // the last frame observed at the start: the step from it moved it
+    }
+    gates_.step(last_position_, car.position, world.frame());
   }
+  last_position_ = car.position;
   frame_ = world.frame();
   last_ = checkParking(goal_, car.position, car.direction, car.speed);
   if (world.gameOver()) {
     wrecked_ = true;
     return;
   }
-  if (!last_.parked()) {
+  if (!last_.parked() || !gates_.done()) {
     hold_start_.reset();
   } else if (!hold_start_) {
     hold_start_ = frame_;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "sim/gate_course.hpp"
 #include "sim/scene.hpp"
 
 namespace cardemo {
@@ -62,6 +63,8 @@ inline constexpr int kMaxStars = 3;
 
 /// A parking challenge run beside a World: call observe() on frame 0 and after every step.
 ///
+/// The goal's gates must all be passed, in order, before the parked checks count (GateCourse).
+///
 /// The level clock starts when the car first moves: at the last frame the car stood at the
 /// position of the first frame observed, so a player reading the task loses no time, and a car
 /// driven from frame 0 has the clock started at frame 0. The time limit counts from there too.
@@ -102,6 +105,10 @@ class ParkingChallenge {
   [[nodiscard]] const ParkingCheck& lastCheck() const { return last_; }
   /// The goal.
   [[nodiscard]] const Goal& goal() const { return goal_; }
+  /// Steps per second.
+  [[nodiscard]] double hz() const { return hz_; }
+  /// The goal's gates and which of them are passed.
+  [[nodiscard]] const GateCourse& gates() const { return gates_; }
 
  private:
   Goal goal_;
@@ -111,6 +118,8 @@ class ParkingChallenge {
   std::int64_t hold_frames_;
   std::optional<std::int64_t> hold_start_;
   std::optional<Eigen::Vector2d> start_position_;
+  Eigen::Vector2d last_position_ = Eigen::Vector2d::Zero();
+  GateCourse gates_;
   std::optional<std::int64_t> clock_start_;
   std::int64_t frame_ = 0;
   ParkingCheck last_;

@@ -96,10 +96,33 @@ std::vector<std::string> fixTexts(const std::vector<ParkingFix>& fixes) {
   return out;
 }
 
+std::string nextGateText(const GateCourse& gates) {
+  const Gate* next = gates.nextGate();
+  if (next == nullptr) return {};
+  return "next gate " + std::to_string(gates.passed() + 1) + ": " + next->name;
+}
+
+std::string gateNoticeText(const GateCourse& gates, const GateNotice& notice) {
+  const std::string number = std::to_string(notice.gate + 1);
+  const std::string name =
+      notice.gate < gates.size() ? std::string(gates.gates()[notice.gate].name) : std::string();
+  switch (notice.kind) {
+    case GateNotice::Kind::kPassed:
+      return "gate " + number + " passed: " + name;
+    case GateNotice::Kind::kMissed:
+      return "missed gate " + number + ": " + name;
+    case GateNotice::Kind::kWrongWay:
+      return "gate " + number + " the wrong way: " + name;
+  }
+  return {};
+}
+
 std::vector<std::string> bayReadout(const ParkingChallenge& challenge) {
   if (challenge.over()) return {};
   const std::vector<ParkingFix> fixes = parkingFixes(challenge.goal(), challenge.lastCheck());
   if (!fixes.empty() && fixes.front().kind == ParkingFixKind::kToBay) return {};
+  // The bay does not count yet: the gate, not the bay, is what to fix.
+  if (!challenge.gates().done()) return {nextGateText(challenge.gates())};
   return fixTexts(fixes);
 }
 
@@ -108,10 +131,11 @@ std::vector<std::string> notParkedReasons(const ParkingChallenge& challenge) {
   if (challenge.parkedFrame()) return reasons;
   if (challenge.wrecked()) reasons.emplace_back("wrecked");
   if (challenge.timedOut()) reasons.emplace_back("time up");
+  if (!challenge.gates().done()) reasons.push_back(nextGateText(challenge.gates()));
   const std::vector<std::string> off =
       fixTexts(parkingFixes(challenge.goal(), challenge.lastCheck()));
   reasons.insert(reasons.end(), off.begin(), off.end());
-  if (off.empty()) {
+  if (off.empty() && challenge.gates().done()) {
     char text[64];
     std::snprintf(text, sizeof text, "hold %.1f / %.1f s", challenge.heldSeconds(),
                   challenge.holdSeconds());

@@ -58,13 +58,22 @@ struct ParkingFix {
 /// The words of each fix, in order.
 [[nodiscard]] std::vector<std::string> fixTexts(const std::vector<ParkingFix>& fixes);
 
+/// "next gate 2: NAME" for the challenge's next gate, or empty when every gate is passed.
+[[nodiscard]] std::string nextGateText(const GateCourse& gates);
+
+/// The words of a gate notice: "gate 1 passed: NAME", "missed gate 2: NAME" (the gate skipped),
+/// "gate 2 the wrong way: NAME".
+[[nodiscard]] std::string gateNoticeText(const GateCourse& gates, const GateNotice& notice);
+
 /// The readout of the challenge's last frame: its fixes' words while the car is near the bay and
-/// some check fails, else nothing (far away, holding, or the run is over).
+/// some check fails (or nextGateText() alone while a gate is still to pass), else nothing (far
+/// away, holding, or the run is over).
 [[nodiscard]] std::vector<std::string> bayReadout(const ParkingChallenge& challenge);
 
 /// Why the challenge's car is not parked (yet), for `replay --json` and the end panels: "wrecked"
-/// or "time up" when that ended the run, then what its last frame lacks: the fixes' words ("12.3
-/// m to the bay" when far), or "hold 0.2 / 0.5 s" while every check holds. Empty once parked.
+/// or "time up" when that ended the run, nextGateText() while a gate is still to pass, then what
+/// its last frame lacks: the fixes' words ("12.3 m to the bay" when far), or "hold 0.2 / 0.5 s"
+/// while every check holds. Empty once parked.
 [[nodiscard]] std::vector<std::string> notParkedReasons(const ParkingChallenge& challenge);
 
 /// One star of a parked run, earned or missed, and why.

@@ -2,6 +2,7 @@
 /// A loaded scene: the player's start, the parked cars, obstacles and walls. Plain data.
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -46,6 +47,26 @@ struct ParkingBay {
   double width = 2.6;        ///< Metres across.
 };
 
+/// A checkpoint of a goal (`goal.gates` in the scene file), passed when the car's centre crosses
+/// its line, or enters its box, on one step (sim/gate_course states the exact rule).
+struct Gate {
+  /// A line to cross or a box to pass through.
+  enum class Kind : std::uint8_t { kLine, kBox };
+  Kind kind = Kind::kLine;                         ///< Line or box.
+  std::string name;                                ///< Said in messages ("missed gate 2: NAME").
+  Eigen::Vector2d from = Eigen::Vector2d::Zero();  ///< Line: one end, world metres.
+  Eigen::Vector2d to = Eigen::Vector2d::Zero();    ///< Line: the other end.
+  /// Box: corners, counter-clockwise, world metres (zero for a line: Eigen leaves its vectors
+  /// uninitialised otherwise, and scenes are compared bit for bit).
+  std::array<Eigen::Vector2d, 4> corners = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                            Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();  ///< Box centre, or the line's midpoint.
+  /// Required direction of travel through the gate, a unit vector (nullopt: either way).
+  std::optional<Eigen::Vector2d> direction;
+  /// Line with a direction: the side of from -> to the crossing must end on (+1 left, -1 right).
+  int side = 0;
+};
+
 /// The parking challenge of a scene (`goal` in the scene file).
 struct Goal {
   ParkingBay bay;                      ///< Where to park.
@@ -56,6 +77,7 @@ struct Goal {
   double hold_time = 0.5;  ///< How long position, heading and speed must hold before PARKED, s.
   std::optional<double> par_time;    ///< Time for three stars, s.
   std::optional<double> time_limit;  ///< The run ends unparked after this long, s.
+  std::vector<Gate> gates;           ///< Checkpoints to pass in order before the bay counts.
 };
 
 /// Marks a scene as a level of the scene picker (`level` in the scene file).

@@ -574,7 +574,25 @@ class RandomSceneText {
     if (coin()) members.push_back(member("hold_time", number(uniform(0, 5))));
     if (coin()) members.push_back(member("par_time", number(uniform(5, 50))));
     if (coin()) members.push_back(member("time_limit", number(uniform(50, 500))));
+    if (coin()) members.push_back(member("gates", gates()));
     return object(std::move(members));
+  }
+
+  // Lines and boxes, some with a direction (a line's may run too close to it: both refuse that).
+  std::string gates() {
+    std::vector<std::string> items;
+    const std::size_t n = rng_() % 5;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<std::string> members = {member("name", stringText("G" + std::to_string(i)))};
+      if (coin()) {
+        members.push_back(member("line", array({point(-100, 100), point(-100, 100)})));
+      } else {
+        members.push_back(member("box", object(poseMembers())));
+      }
+      if (coin()) members.push_back(member("direction_deg", number(uniform(-360, 360))));
+      items.push_back(object(std::move(members)));
+    }
+    return array(items);
   }
 
   std::string level() {

@@ -53,6 +53,22 @@ class SceneBits {
     same(a.hold_time, b.hold_time, field + ".hold_time");
     same(a.par_time, b.par_time, field + ".par_time");
     same(a.time_limit, b.time_limit, field + ".time_limit");
+    note(a.gates.size() == b.gates.size(), field + ".gates count");
+    for (std::size_t i = 0; i < a.gates.size() && i < b.gates.size(); ++i) {
+      same(a.gates[i], b.gates[i], field + ".gates[" + std::to_string(i) + "]");
+    }
+  }
+  void same(const Gate& a, const Gate& b, const std::string& field) {
+    note(a.kind == b.kind, field + ".kind");
+    note(a.name == b.name, field + ".name");
+    same(a.from, b.from, field + ".from");
+    same(a.to, b.to, field + ".to");
+    for (std::size_t k = 0; k < a.corners.size(); ++k) {
+      same(a.corners[k], b.corners[k], field + ".corners[" + std::to_string(k) + "]");
+    }
+    same(a.center, b.center, field + ".center");
+    same(a.direction, b.direction, field + ".direction");
+    note(a.side == b.side, field + ".side");
   }
   void same(const LevelInfo& a, const LevelInfo& b, const std::string& field) {
     note(a.order == b.order, field + ".order");
