@@ -7,6 +7,7 @@
 
 #include "geometry/angle.hpp"
 #include "render/end_panel.hpp"
+#include "render/gate_marks.hpp"
 #include "render/hud.hpp"
 #include "render/hud_colors.hpp"
 #include "render/panel_place.hpp"
@@ -19,6 +20,7 @@ namespace {
 constexpr Rgba kTarget{255, 214, 70, 255};
 constexpr Rgba kTargetReady{90, 230, 120, 255};
 constexpr Rgba kHoldTrough{55, 58, 64, 255};
+constexpr Rgba kWarning{255, 110, 95, 255};
 using hud_colors::kDim;
 using hud_colors::kPanel;
 using hud_colors::kText;
@@ -71,7 +73,9 @@ void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   const TimerMetrics m = timerMetrics(vp);
   const std::string time = secondsText(challenge.seconds());
   const std::string detail = timerDetail(challenge);
-  const std::string readout = joined(bayReadout(challenge), "   ");
+  // A fresh miss says so in red where the bay readout goes; it matters more.
+  const std::optional<std::string> warning = freshGateWarning(challenge);
+  const std::string readout = warning ? *warning : joined(bayReadout(challenge), "   ");
   const bool holding =
       !challenge.over() && challenge.holdStart().has_value() && challenge.holdSeconds() > 0.0;
   const bool extra = !readout.empty() || holding;
@@ -90,7 +94,7 @@ void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   canvas.text({tl.x() + 0.5f * (w - ds), y}, detail, m.small, kDim);
   y += m.small_row + 0.3f * m.pad;
   if (!readout.empty()) {
-    canvas.text({tl.x() + 0.5f * (w - rs), y}, readout, m.readout, kTarget);
+    canvas.text({tl.x() + 0.5f * (w - rs), y}, readout, m.readout, warning ? kWarning : kTarget);
   } else if (holding) {
     const float bar_h = 0.6f * static_cast<float>(m.readout);
     const Eigen::Vector2f at{tl.x() + m.pad,
@@ -198,6 +202,11 @@ std::string timerDetail(const ParkingChallenge& challenge) {
   if (challenge.timedOut()) return "time up";
   if (challenge.wrecked()) return "wrecked";
   if (goal.par_time) add("par " + secondsText(*goal.par_time));
+  if (const GateCourse& gates = challenge.gates(); gates.size() > 0) {
+    add(gates.done()
+            ? std::string("gates done")
+            : "gate " + std::to_string(gates.passed() + 1) + "/" + std::to_string(gates.size()));
+  }
   if (goal.time_limit) {
     add("left " + secondsText(std::max(0.0, *goal.time_limit - challenge.seconds())));
   }

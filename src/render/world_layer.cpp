@@ -8,6 +8,7 @@
 
 #include "render/car_art.hpp"
 #include "render/effects_layer.hpp"
+#include "render/gate_marks.hpp"
 #include "render/goal_overlay.hpp"
 #include "render/ground_layer.hpp"
 #include "render/headlights.hpp"
@@ -108,7 +109,10 @@ void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
   if (scene.markings.empty()) drawBayLines(canvas, camera, scene, palette);
   drawMarkings(canvas, camera, scene, palette);
   // Paint on the ground, so the cars drive over it.
-  if (options.goal != nullptr) drawGoalBay(canvas, camera, *options.goal);
+  if (options.goal != nullptr) {
+    drawGoalBay(canvas, camera, *options.goal);
+    drawGates(canvas, camera, *options.goal->challenge);
+  }
   if (fx != nullptr) drawSkidMarks(canvas, camera, *fx, palette);
   // Light on the ground: under the walls and the cars, which would otherwise be painted over.
   drawHeadlightBeams(canvas, camera, world, player_box, palette);
