@@ -212,8 +212,9 @@ LEVEL3={'file':'level-3-parallel','bay':(0.0,0.0),'make':make3,'comment':'Level 
 def make4(S,B,rows):
     bx,by=B[0],B[1]
     inner=1.25      # half the garage's inner width: 2.5 m for a 1.8 m car
-    door=by-2.75    # door line; the back wall is 0.25 m behind the parked car's nose
-    back=by+2.5
+    door=by-2.75    # door line; the back wall is 0.45 m behind the parked car's nose, so a car
+                    # stopped by ramming it is 0.45 m off, outside the 0.3 m tolerance
+    back=by+2.7
     obstacles=[{"id":"garage-left","points":box(bx-inner-0.15,(door+back)/2,0.15,(back-door)/2)},
                {"id":"garage-right","points":box(bx+inner+0.15,(door+back)/2,0.15,(back-door)/2)},
                {"id":"garage-back","points":box(bx,back+0.15,inner+0.3,0.15)},
@@ -247,6 +248,15 @@ def make5(S,B,rows):
     top=max(c[1] for c in course)+0.7
     bottom=min(c[1] for c in course)-0.7
     obstacles=[{"id":"bollard-%d"%(k+1),"points":bollard(x,mid)} for k,(x,_) in enumerate(turns)]
+    # A gate from each bollard to the kerb on the side the weave passes it, crossed driving +x: a
+    # straight drive passes every bollard on one side, so it misses a gate and never parks.
+    gates=[]
+    for k,(x,y) in enumerate(turns):
+        left=y>mid
+        edge=mid+0.35 if left else mid-0.35
+        kerb=top if left else bottom
+        gates.append({"name":"%s of bollard %d"%("left" if left else "right",k+1),
+                      "line":[[r(x),r(edge)],[r(x),r(kerb)]],"direction_deg":0})
     obstacles+=[{"id":"kerb-north","points":box((S[0]-3+bx-5)/2,top+0.2,(bx-5-(S[0]-3))/2,0.2)},
                 {"id":"kerb-south","points":box((S[0]-3+bx-5)/2,bottom-0.2,(bx-5-(S[0]-3))/2,0.2)}]
     parked,wall,mk=bay_between_cars(bx,by)
@@ -255,7 +265,8 @@ def make5(S,B,rows):
     return scene('level-5-slalom',5,'Slalom',
       'Weave between the bollards, left of the first, then brake into the bay at the end',
       S,(bx,by,0,5.5,2.6),
-      {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60},
+      {"position_tolerance":0.6,"heading_tolerance_deg":10,"max_speed":0.3,"par_time":12,"time_limit":60,
+       "gates":gates},
       parked,obstacles,mk,[[r(S[0]-4),r(min(bottom,by)-8)],[bx+5,r(max(top,by)+8)]])
 # Turns to 34 degrees: with the steering ramp each leg is longer, and the course must still fit a
 # 1024 px wide window at the camera's closest fit (24 px/m).

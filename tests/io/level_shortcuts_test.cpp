@@ -1,0 +1,141 @@
+// Each level's obvious shortcut does not park: the checks beside the golden replays
+// (assets/replays/level-*.replay), which show that the intended manoeuvre does.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/scene_json.hpp"
+#include "sim/parking_goal.hpp"
+#include "sim/world.hpp"
+
+namespace cardemo::level_shortcuts_test {
+namespace {
+
+// One leg of a drive: keys held for `frames` steps, or (frames 0) until the car stands still.
+struct Leg {
+  std::string_view keys;
+  int frames = 0;
+};
+
+InputFrame inputOf(std::string_view keys) {
+  InputFrame in;
+  for (const char c : keys) {
+    in.up = in.up || c == 'U';
+    in.down = in.down || c == 'D';
+    in.left = in.left || c == 'L';
+    in.right = in.right || c == 'R';
+  }
+  return in;
+}
+
+Scene level(std::string_view file) {
+  const Parsed<Scene> scene = loadScene(std::string(CARDEMO_SOURCE_DIR) + "/assets/scenes/levels/" +
+                                        std::string(file) + ".json");
+  EXPECT_TRUE(scene.ok()) << scene.error().toString();
+  return scene.ok() ? scene.value() : Scene{};
+}
+
+// Drives `legs`, then lets the car stand for 4 s; true when the challenge parked the car.
+bool parks(const Scene& scene, const std::vector<Leg>& legs) {
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, world.settings().hz, scene.player.health);
+  challenge.observe(world);
+  const auto step = [&](const InputFrame& in) {
+    world.step(in);
+    challenge.observe(world);
+  };
+  for (const Leg& leg : legs) {
+    const InputFrame in = inputOf(leg.keys);
+    if (leg.frames > 0) {
+      for (int i = 0; i < leg.frames && !challenge.over(); ++i) step(in);
+    } else {
+      // Brake to a stop (at most 10 s), then let go of the pedal.
+      for (int i = 0; i < 1200 && !challenge.over() && world.car().speed != 0.0; ++i) step(in);
+    }
+  }
+  for (int i = 0; i < 480 && !challenge.over(); ++i) step(InputFrame{});
+  return challenge.parkedFrame().has_value();
+}
+
+// Full throttle straight ahead for `frames`, then brake to a stop.
+std::vector<Leg> straight(int frames) {
+  return {{"U", frames}, {"D", 0}};
+}
+
+TEST(LevelShortcuts, SlalomStraightDrivesNeverPark) {
+  const Scene slalom = level("level-5-slalom");
+  ASSERT_TRUE(slalom.goal.has_value());
+  ASSERT_EQ(slalom.goal->gates.size(), 3u);
+  Scene open = slalom;
+  open.goal->gates.clear();
+  int parked_without_gates = 0;
+  for (int frames = 30; frames <= 1500; frames += 6) {
+    EXPECT_FALSE(parks(slalom, straight(frames))) << "throttle for " << frames << " frames";
+    parked_without_gates += parks(open, straight(frames)) ? 1 : 0;
+  }
+  // Without its gates the level falls to the shortcut: the test is not vacuous.
+  EXPECT_GT(parked_without_gates, 0);
+}
+
+TEST(LevelShortcuts, StraightInRammingTheWallNeverParks) {
+  // Level 1: use the back wall as the brake (full throttle, never brake).
+  const Scene s = level("level-1-straight");
+  for (int frames = 200; frames <= 1200; frames += 25) {
+    EXPECT_FALSE(parks(s, {{"U", frames}})) << frames;
+  }
+}
+
+TEST(LevelShortcuts, ReverseBayNoseFirstNeverParks) {
+  // Level 2: drive forwards into the bay (the car must end facing out).
+  const Scene s = level("level-2-reverse");
+  for (int run : {20, 40, 60, 80, 100, 120}) {
+    for (int turn = 60; turn <= 300; turn += 20) {
+      for (int in : {0, 40, 80, 120}) {
+        EXPECT_FALSE(parks(s, {{"U", run}, {"UL", turn}, {"U", in}, {"D", 0}}))
+            << run << " " << turn << " " << in;
+      }
+    }
+  }
+}
+
+TEST(LevelShortcuts, ParallelNoseFirstNeverParks) {
+  // Level 3: steer forwards into the gap instead of reversing in.
+  const Scene s = level("level-3-parallel");
+  for (int run = 0; run <= 200; run += 25) {
+    for (int out = 20; out <= 140; out += 20) {
+      for (int back = 20; back <= 140; back += 20) {
+        EXPECT_FALSE(parks(s, {{"U", run}, {"UR", out}, {"UL", back}, {"D", 0}}))
+            << run << " " << out << " " << back;
+      }
+    }
+  }
+}
+
+TEST(LevelShortcuts, GarageRammingTheBackWallNeverParks) {
+  // Level 4: turn in and let the garage's back wall stop the car.
+  const Scene s = level("level-4-garage");
+  for (int run = 40; run <= 140; run += 10) {
+    for (int turn = 100; turn <= 260; turn += 20) {
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UL", turn}, {"U", 600}})) << run << " " << turn;
+    }
+  }
+}
+
+TEST(LevelShortcuts, ThreePointTurnInOneSweepNeverParks) {
+  // Level 6: turn round in one forward sweep on full lock (or one reverse sweep).
+  const Scene s = level("level-6-turn");
+  for (int run = 0; run <= 120; run += 20) {
+    for (int sweep = 60; sweep <= 900; sweep += 40) {
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UL", sweep}, {"D", 0}})) << run << " " << sweep;
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UR", sweep}, {"D", 0}})) << run << " " << sweep;
+      EXPECT_FALSE(parks(s, {{"U", run}, {"D", 0}, {"DL", sweep}, {"U", 0}}))
+          << run << " " << sweep;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cardemo::level_shortcuts_test
