@@ -309,6 +309,35 @@ LEVEL6={'file':'level-6-turn','bay':(0.0,0.0),'make':make6,
              ('U',lambda q:f(q,'x')<-10),('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
 
+def make7(S,B,rows):
+    bx,by=B[0],B[1]
+    # The alley: 2.6 m between its walls (0.4 m each side of the car), from 3 m past the start to
+    # where the car's corners leave its lane on the turn out, with blocks out to the bounds on both
+    # sides, so the alley is the only way through.
+    half=1.3
+    lane=[c for c in corners(rows,S) if abs(c[1]-S[1])>half-0.15]
+    x0=S[0]+3.0
+    x1=min(c[0] for c in lane)-0.3
+    top=S[1]+8.0
+    bottom=by-6.0
+    obstacles=[{"id":"alley-north","points":box((x0+x1)/2,(S[1]+half+top)/2,(x1-x0)/2,(top-S[1]-half)/2)},
+               {"id":"alley-south","points":box((x0+x1)/2,(S[1]-half+bottom)/2,(x1-x0)/2,(S[1]-half-bottom)/2)}]
+    parked=[car('W1',bx-2.7,by,270),car('E1',bx+2.7,by,90)]
+    gates=[{"name":"the alley","box":{"x":r((x0+x1)/2),"y":r(S[1]),"heading_deg":0,"length":r(x1-x0),"width":2*half},
+            "direction_deg":0}]
+    mk=[line((bx+x,by-2.75),(bx+x,by+2.75)) for x in (-1.35,1.35)]
+    mk.append(arrow((S[0]-3,S[1]),(S[0],S[1])))
+    return scene('level-7-alley',7,'Narrow alley',
+      'Drive through the narrow alley without touching its walls, then turn right into the bay',
+      S,(bx,by,270,5.5,2.6),
+      {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":90,
+       "gates":gates},
+      parked,obstacles,mk,[[r(S[0]-5),r(bottom)],[r(bx+8),r(top)]])
+LEVEL7={'file':'level-7-alley','bay':(0.0,0.0),'make':make7,
+    'comment':'Level 7: straight through the alley at the speed cap, right lock out of it, straighten, brake in the bay.',
+    'steps':[('U',lambda q:f(q,'x')>24),('UR',lambda q:f(q,'heading_deg')<-60),('R',lambda q:f(q,'heading_deg')<-86),
+             ('.',lambda q:abs(f(q,'steer_deg'))<0.01),('D',lambda q:f(q,'speed')<=0),('.',30)]}
+
 def main():
     global CARDEMO
     global ONLY
@@ -322,7 +351,7 @@ def main():
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
-        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6):
+        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7):
             if ONLY and level["file"].split("-")[1] not in ONLY:
                 continue
             build(level)

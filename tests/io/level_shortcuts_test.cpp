@@ -137,5 +137,18 @@ TEST(LevelShortcuts, ThreePointTurnInOneSweepNeverParks) {
   }
 }
 
+TEST(LevelShortcuts, AlleyStraightOnOrTurningEarlyNeverParks) {
+  // Level 7: straight on past the alley's end, or turning towards the bay before leaving it.
+  const Scene s = level("level-7-alley");
+  for (int frames = 60; frames <= 1200; frames += 20) {
+    EXPECT_FALSE(parks(s, straight(frames))) << frames;
+  }
+  for (int run = 100; run <= 500; run += 25) {
+    for (int turn = 60; turn <= 240; turn += 30) {
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UR", turn}, {"U", 60}, {"D", 0}})) << run << " " << turn;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cardemo::level_shortcuts_test
