@@ -338,6 +338,32 @@ LEVEL7={'file':'level-7-alley','bay':(0.0,0.0),'make':make7,
     'steps':[('U',lambda q:f(q,'x')>24),('UR',lambda q:f(q,'heading_deg')<-60),('R',lambda q:f(q,'heading_deg')<-86),
              ('.',lambda q:abs(f(q,'steer_deg'))<0.01),('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
+def make8(S,B,rows):
+    bx,by=B[0],B[1]
+    # A row of bays at 45 degrees to the lane (herringbone), entered forwards turning right;
+    # neighbours sit one bay width apart across their own heading: 2.6 / sin 45 along the row.
+    h=-45.0
+    d=(math.cos(math.radians(h)),math.sin(math.radians(h)))
+    pitch=2.6/math.sin(math.radians(45))
+    parked=[car('P%d'%(k+3 if k>0 else k+2),bx+k*pitch,by,h) for k in (-2,-1,1,2)]
+    for i,c in enumerate(parked): c['id']='A%d'%(i+1)
+    mk=[]
+    for k in (-2.5,-1.5,-0.5,0.5,1.5,2.5):
+        cx=bx+k*pitch
+        mk.append(line((cx-d[0]*2.75,by-d[1]*2.75),(cx+d[0]*2.75,by+d[1]*2.75)))
+    back=by-2.75*math.sin(math.radians(45))-1.6
+    obstacles=[{"id":"back-wall","points":box(bx,back-0.2,3.5*pitch,0.2)}]
+    mk.append(arrow((S[0]-3,S[1]),(S[0],S[1])))
+    return scene('level-8-angled',8,'Angled bay',
+      'Turn into the angled bay between the cars at its own slant and stop inside it',
+      S,(bx,by,h,5.5,2.6),
+      {"position_tolerance":0.5,"heading_tolerance_deg":6,"max_speed":0.3,"par_time":12,"time_limit":60},
+      parked,obstacles,mk,[[r(S[0]-5),r(back-1)],[r(bx+4*pitch),r(S[1]+6)]])
+LEVEL8={'file':'level-8-angled','bay':(0.0,0.0),'make':make8,
+    'comment':'Level 8: along the lane, right lock to the bay\'s 45 degrees, straighten, roll in, brake.',
+    'steps':[('U',lambda q:f(q,'x')>3),('.',30),(('R',16),('UR',8),lambda q:f(q,'heading_deg')<-38.5),
+             ('.',lambda q:abs(f(q,'steer_deg'))<0.01),('U',40),('D',lambda q:f(q,'speed')<=0),('.',30)]}
+
 def main():
     global CARDEMO
     global ONLY
@@ -351,7 +377,7 @@ def main():
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
-        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7):
+        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8):
             if ONLY and level["file"].split("-")[1] not in ONLY:
                 continue
             build(level)

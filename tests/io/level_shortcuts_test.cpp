@@ -150,5 +150,19 @@ TEST(LevelShortcuts, AlleyStraightOnOrTurningEarlyNeverParks) {
   }
 }
 
+TEST(LevelShortcuts, AngledBayStraightOrSquareNeverParks) {
+  // Level 8: stop beside the bay without turning in, or swing in square (90 degrees) to it.
+  const Scene s = level("level-8-angled");
+  for (int frames = 20; frames <= 600; frames += 10) {
+    EXPECT_FALSE(parks(s, straight(frames))) << frames;
+  }
+  for (int run = 0; run <= 120; run += 10) {
+    // Full right lock until the car faces the back wall (-90 degrees) or beyond.
+    for (int turn = 300; turn <= 600; turn += 50) {
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UR", turn}, {"D", 0}})) << run << " " << turn;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cardemo::level_shortcuts_test
