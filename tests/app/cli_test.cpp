@@ -293,4 +293,39 @@ TEST(Cli, ReplayBayChainCountsTheBaysParked) {
   EXPECT_FALSE(nlohmann::json::parse(plain.out, nullptr, false).contains("bay_chain"));
 }
 
+// `replay --json` reports the gates: the slalom's golden weave passes all three, in order; a
+// straight drive misses the first, and not_parked names it.
+TEST(Cli, ReplayJsonReportsTheGates) {
+  const auto json_of = [](const std::string& replay) {
+    const CliResult r = cardemo("replay " + replay + " --json -");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out, nullptr, false);
+  };
+  const nlohmann::json golden = json_of(asset("replays/level-5-slalom.replay"));
+  const nlohmann::json names = {"left of bollard 1", "right of bollard 2", "left of bollard 3"};
+  EXPECT_EQ(golden["gates"]["total"], 3);
+  EXPECT_EQ(golden["gates"]["passed"], 3);
+  EXPECT_EQ(golden["gates"]["names"], names);
+  EXPECT_TRUE(golden["gates"]["next"].is_null());
+  EXPECT_EQ(golden["gates"]["misses"], 0);
+
+  const auto straight = writeTemp(
+      "straight.replay", "cardemo-replay 1\nscene " + asset("scenes/levels/level-5-slalom.json") +
+                             "\n700 U\n240 D\n120 .\n");
+  const nlohmann::json missed = json_of(straight.string());
+  EXPECT_TRUE(missed["parked"].is_null());
+  EXPECT_EQ(missed["gates"]["passed"], 0);
+  EXPECT_EQ(missed["gates"]["next"], "left of bollard 1");
+  EXPECT_GE(missed["gates"]["misses"], 1);
+  ASSERT_FALSE(missed["not_parked"].empty());
+  EXPECT_EQ(missed["not_parked"][0], "next gate 1: left of bollard 1");
+  const CliResult human = cardemo("replay " + straight.string());
+  EXPECT_NE(human.out.find("gates     0 of 3 passed"), std::string::npos) << human.out;
+
+  // No goal: null.
+  const auto lot = writeTemp(
+      "lot.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") + "\n10 U\n");
+  EXPECT_TRUE(json_of(lot.string())["gates"].is_null());
+}
+
 }  // namespace
