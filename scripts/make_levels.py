@@ -364,6 +364,34 @@ LEVEL8={'file':'level-8-angled','bay':(0.0,0.0),'make':make8,
     'steps':[('U',lambda q:f(q,'x')>3),('.',30),(('R',16),('UR',8),lambda q:f(q,'heading_deg')<-38.5),
              ('.',lambda q:abs(f(q,'steer_deg'))<0.01),('U',40),('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
+def make9(S,B,rows):
+    bx,by=B[0],B[1]
+    # The bay lies across a line of traffic cones from the start: the only way in is round the
+    # line's far end (a U-turn), so the cones run from behind the bay to just short of where the
+    # car's swept corners come within 0.8 m of the line.
+    ymid=(S[1]+by)/2
+    swept=corners(rows,S)
+    cones=[]
+    x=min(S[0],bx)-6.0
+    while all(abs(c[0]-x)>0.8 or abs(c[1]-ymid)>0.8 for c in swept):
+        cones.append(x)
+        x+=1.5
+    obstacles=[{"id":"cone-%d"%(k+1),"points":bollard(cx,ymid,0.25)} for k,cx in enumerate(cones)]
+    parked=[car('F1',bx-5.6,by,180)]
+    top=max(c[1] for c in swept)+2.0
+    bottom=min(c[1] for c in swept)-2.0
+    mk=[line((bx+2.75,by-1.3),(bx+2.75,by+1.3)),line((bx-2.75,by-1.3),(bx-2.75,by+1.3)),
+        arrow((S[0]-3,S[1]),(S[0],S[1]))]
+    return scene('level-9-cones',9,'Behind the cones',
+      'The bay is behind the line of cones: drive round its far end and back into the bay',
+      S,(bx,by,180,5.5,2.6),
+      {"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":16,"time_limit":90},
+      parked,obstacles,mk,[[r(min(cones)-4),r(bottom)],[r(max(c[0] for c in swept)+3),r(top)]])
+LEVEL9={'file':'level-9-cones','bay':(0.0,0.0),'make':make9,
+    'comment':'Level 9: along the cones, full left lock round their end, straighten, back along them, brake in the bay.',
+    'steps':[('U',lambda q:f(q,'x')>14),('UL',lambda q:f(q,'heading_deg')>174),('U',lambda q:abs(f(q,'steer_deg'))<0.01),
+             ('U',lambda q:f(q,'x')<2),('D',lambda q:f(q,'speed')<=0),('.',30)]}
+
 def main():
     global CARDEMO
     global ONLY
@@ -377,7 +405,7 @@ def main():
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
-        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8):
+        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8, LEVEL9):
             if ONLY and level["file"].split("-")[1] not in ONLY:
                 continue
             build(level)

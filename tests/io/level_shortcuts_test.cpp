@@ -164,5 +164,20 @@ TEST(LevelShortcuts, AngledBayStraightOrSquareNeverParks) {
   }
 }
 
+TEST(LevelShortcuts, ConesUTurnShortOfTheirEndNeverParks) {
+  // Level 9: turn round before the end of the cone line (the golden drive runs 391 frames first),
+  // or stop beside the bay on the wrong side of the cones.
+  const Scene s = level("level-9-cones");
+  for (int run = 40; run <= 300; run += 20) {
+    for (int back = 60; back <= 420; back += 60) {
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UL", 300}, {"U", back}, {"D", 0}}))
+          << run << " " << back;
+    }
+  }
+  for (int frames = 20; frames <= 400; frames += 20) {
+    EXPECT_FALSE(parks(s, straight(frames))) << frames;
+  }
+}
+
 }  // namespace
 }  // namespace cardemo::level_shortcuts_test
