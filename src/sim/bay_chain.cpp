@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <unordered_map>
 
 #include "geometry/convex_polygon.hpp"
 #include "geometry/obb2.hpp"
@@ -23,6 +25,66 @@ bool sameKind(const ParkedCar& a, const ParkedCar& b) {
   const double turn = std::remainder(a.heading_deg - b.heading_deg, 360.0);
   return std::abs(turn) < kSame && std::abs(a.box.half.x() - b.box.half.x()) < kSame &&
          std::abs(a.box.half.y() - b.box.half.y()) < kSame;
+}
+
+// Headings in [0, 360), as the kinds are looked up.
+double headingKey(double heading_deg) {
+  double h = std::fmod(heading_deg, 360.0);
+  if (h < 0.0) h += 360.0;
+  return h >= 360.0 ? 0.0 : h;
+}
+
+// A cell of (heading, half length, half width) space, kCell wide on each axis: two cars of one
+// kind (sameKind) lie in the same cell or neighbouring ones.
+constexpr double kCell = 2.0 * kSame;
+
+struct KindCell {
+  double heading, half_length, half_width;  // cell indices, as doubles (sizes may be huge)
+  bool operator==(const KindCell&) const = default;
+};
+
+struct KindCellHash {
+  std::size_t operator()(const KindCell& c) const {
+    const std::hash<double> h;
+    return h(c.heading) ^ (h(c.half_length) * 31u) ^ (h(c.half_width) * 1000003u);
+  }
+};
+
+KindCell kindCell(double heading_key, double half_length, double half_width) {
+  return {std::floor(heading_key / kCell), std::floor(half_length / kCell),
+          std::floor(half_width / kCell)};
+}
+
+// Cars grouped by kind in scene order: a car joins the earliest group whose first car is of its
+// kind, as a scan of every group would, but looks only in the neighbouring cells, so that a lot
+// of 10,000 cars of as many kinds groups in linear time, not quadratic.
+std::vector<Row> groupByKind(const std::vector<ParkedCar>& parked) {
+  std::vector<Row> kinds;
+  std::unordered_map<KindCell, std::vector<std::size_t>, KindCellHash> leaders;
+  for (const ParkedCar& car : parked) {
+    const double h = headingKey(car.heading_deg);
+    const double hx = car.box.half.x();
+    const double hy = car.box.half.y();
+    std::size_t group = kinds.size();
+    for (const double dh : {-kCell, 0.0, kCell}) {
+      for (const double dx : {-kCell, 0.0, kCell}) {
+        for (const double dy : {-kCell, 0.0, kCell}) {
+          const auto found = leaders.find(kindCell(headingKey(h + dh), hx + dx, hy + dy));
+          if (found == leaders.end()) continue;
+          for (const std::size_t g : found->second) {
+            if (g < group && sameKind(*kinds[g].cars.front(), car)) group = g;
+          }
+        }
+      }
+    }
+    if (group == kinds.size()) {
+      leaders[kindCell(h, hx, hy)].push_back(kinds.size());
+      kinds.push_back({{&car}});
+    } else {
+      kinds[group].cars.push_back(&car);
+    }
+  }
+  return kinds;
 }
 
 // The empty slots of one row of same-kind cars (at least two), as bay centres.
@@ -86,16 +148,7 @@ Eigen::Vector2d chainCentre(const Scene& scene) {
 
 std::vector<FreeBay> findFreeBays(const Scene& scene, const BayChainSettings& settings) {
   // Rows: cars of one kind, grouped in scene order (the first car of a kind leads its group).
-  std::vector<Row> kinds;
-  for (const ParkedCar& car : scene.parked) {
-    auto row = std::find_if(kinds.begin(), kinds.end(),
-                            [&car](const Row& r) { return sameKind(*r.cars.front(), car); });
-    if (row == kinds.end()) {
-      kinds.push_back({{&car}});
-    } else {
-      row->cars.push_back(&car);
-    }
-  }
+  const std::vector<Row> kinds = groupByKind(scene.parked);
   std::vector<ParkingBay> found;
   for (const Row& row : kinds) {
     if (row.cars.size() < 2) continue;
@@ -178,6 +231,25 @@ bool BayChain::over() const {
   return bays_.empty() || timed_out_ || wrecked_;
 }
 
+double BayChain::secondsLeft() const {
+  const double left = static_cast<double>(limit_frames_ - clockFrames()) / hz_;
+  return std::max(0.0, left);
+}
+
+ChainScore BayChain::score() const {
+  return {count_, last_park_clock_, static_cast<double>(last_park_clock_) / hz_};
+}
+
+std::optional<std::size_t> BayChain::next() const {
+  if (bays_.size() < 2) return std::nullopt;
+  return (current_ + 1) % bays_.size();
+}
+
+bool ChainScore::betterThan(const ChainScore& other) const {
+  if (count != other.count) return count > other.count;
+  return seconds < other.seconds;
+}
+
 void BayChain::observe(const World& world) {
   if (over()) return;
   if (!clock_start_ && world.car().position != world.scene().player.position) {
@@ -193,10 +265,22 @@ void BayChain::observe(const World& world) {
     return;
   }
   challenge_.observe(world);
+  if (must_leave_) {
+    // Parked again without leaving: watch afresh, uncounted, until the car is out of the bay.
+    if (challenge_.parkedFrame()) {
+      challenge_ = ParkingChallenge(chainGoal(bays_[current_].bay, settings_), hz_, start_health_);
+      challenge_.observe(world);
+    }
+    must_leave_ = challenge_.lastCheck().position_ok;
+    return;
+  }
   if (challenge_.parkedFrame()) {
     ++count_;
+    last_park_clock_ = clockFrames();
     current_ = (current_ + 1) % bays_.size();
+    must_leave_ = bays_.size() == 1;
     challenge_ = ParkingChallenge(chainGoal(bays_[current_].bay, settings_), hz_, start_health_);
+    if (must_leave_) challenge_.observe(world);
   }
 }
 

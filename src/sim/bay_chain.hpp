@@ -45,6 +45,16 @@ struct BayChainSettings {
 /// The goal for parking in `bay` under `settings`: no par, no time limit of its own.
 [[nodiscard]] Goal chainGoal(const ParkingBay& bay, const BayChainSettings& settings);
 
+/// The result of a bay chain: how many bays, and when the last of them was parked.
+struct ChainScore {
+  int count = 0;            ///< Bays parked.
+  std::int64_t frames = 0;  ///< Frames on the chain's clock when the last of them was parked.
+  double seconds = 0.0;     ///< frames / hz.
+
+  /// True when this score beats `other`: more bays, then the last of them sooner.
+  [[nodiscard]] bool betterThan(const ChainScore& other) const;
+};
+
 /// The bay chain run beside a World: call observe() on frame 0 and after every step.
 class BayChain {
  public:
@@ -63,8 +73,24 @@ class BayChain {
   [[nodiscard]] int count() const { return count_; }
   /// Frames on the chain's clock, which starts when the car first moves (as a level's clock).
   [[nodiscard]] std::int64_t clockFrames() const;
+  /// The frame at which the chain's clock started, once the car has moved.
+  [[nodiscard]] std::optional<std::int64_t> clockStart() const { return clock_start_; }
+  /// Seconds left before the time limit ends the chain (0 once it has).
+  [[nodiscard]] double secondsLeft() const;
   /// The time limit passed, the car was wrecked, or there is no bay: the count is final.
   [[nodiscard]] bool over() const;
+  /// The time limit ended the chain.
+  [[nodiscard]] bool timedOut() const { return timed_out_; }
+  /// Health reached 0 and ended the chain.
+  [[nodiscard]] bool wrecked() const { return wrecked_; }
+  /// The count so far and the clock when its last bay was parked.
+  [[nodiscard]] ChainScore score() const;
+  /// Index in bays() of the bay after the highlighted one, or nullopt with fewer than two bays.
+  [[nodiscard]] std::optional<std::size_t> next() const;
+  /// The rules the chain runs by.
+  [[nodiscard]] const BayChainSettings& settings() const { return settings_; }
+  /// Steps per second.
+  [[nodiscard]] double hz() const { return hz_; }
   /// The goal check of the highlighted bay (the readout and hold of the levels).
   [[nodiscard]] const ParkingChallenge& challenge() const { return challenge_; }
 
@@ -78,8 +104,12 @@ class BayChain {
   std::int64_t limit_frames_;
   std::optional<std::int64_t> clock_start_;
   std::int64_t frame_ = 0;
+  std::int64_t last_park_clock_ = 0;
   bool timed_out_ = false;
   bool wrecked_ = false;
+  // With a single bay the next bay is the one just parked: it counts again only after the car
+  // has left it, or standing still would count it every hold time.
+  bool must_leave_ = false;
   ParkingChallenge challenge_;
 };
 

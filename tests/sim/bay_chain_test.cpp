@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -73,6 +74,30 @@ TEST(BayChain, NamedEdgeCases) {
                   .empty());
   EXPECT_TRUE(findFreeBays(sceneWith({})).empty());
   EXPECT_TRUE(BayChain(sceneWith({}), 120.0).over());
+  // Headings either side of 0 / 360 and within the tolerance are one kind: one row, two ends.
+  const std::vector<FreeBay> wrapped = findFreeBays(
+      sceneWith({parkedCar("a", 0, 0, 359.9999998), parkedCar("b", 0, 5, 0.0000003)}, 30.0, 0.0));
+  ASSERT_EQ(wrapped.size(), 2u);
+  // Within the tolerance (0.9e-6 degrees) b is of the row's kind: pitch 5, bays at -5 and 15.
+  // Beyond it (2e-6) b stands alone: the row is a and c at pitch 10, bays at -10 and 20.
+  const auto bayXs = [](double b_heading) {
+    std::vector<double> xs;
+    for (const FreeBay& bay : findFreeBays(sceneWith(
+             {parkedCar("a", 0, 0, 90), parkedCar("b", 5, 0, b_heading), parkedCar("c", 10, 0, 90)},
+             0.0, 30.0))) {
+      xs.push_back(bay.bay.center.x());
+    }
+    std::sort(xs.begin(), xs.end());
+    return xs;
+  };
+  const std::vector<double> same = bayXs(90.0000009);
+  ASSERT_EQ(same.size(), 2u);
+  EXPECT_NEAR(same[0], -5.0, 1e-9);
+  EXPECT_NEAR(same[1], 15.0, 1e-9);
+  const std::vector<double> other = bayXs(90.000002);
+  ASSERT_EQ(other.size(), 2u);
+  EXPECT_NEAR(other[0], -10.0, 1e-9);
+  EXPECT_NEAR(other[1], 20.0, 1e-9);
 }
 
 // Brute-force twin: every slot of a row's lattice from one pitch before its first car to one past
@@ -159,6 +184,71 @@ void driveStraightTo(World& world, BayChain& chain, double target, std::vector<I
   }
 }
 
+// Reverses straight back along `dir` to stop with the car's centre at `target` (m along `dir` from
+// `start`, less than where it stands): lets go for a step (a fresh Down at a standstill reverses),
+// holds Down while the braking distance leaves room, then Up (a press begun while moving
+// backwards brakes and holds) until stopped. Records the keys.
+void reverseTo(World& world, BayChain& chain, double target, std::vector<InputFrame>& keys,
+               const Eigen::Vector2d& start, const Eigen::Vector2d& dir) {
+  keys.emplace_back();
+  world.step({});
+  chain.observe(world);
+  bool braking = false;
+  for (int i = 0; i < 2400; ++i) {
+    const double at = (world.car().position - start).dot(dir);
+    const double v = world.car().speed;
+    if (braking && v == 0.0) break;
+    braking = braking || at - v * v / (2.0 * 9.0) + v / 120.0 <= target;
+    InputFrame in;
+    in.down = !braking;
+    in.up = braking;
+    keys.push_back(in);
+    world.step(in);
+    chain.observe(world);
+  }
+}
+
+TEST(BayChain, ASingleBayCountsAgainOnlyAfterTheCarHasLeftIt) {
+  // Two cars in a row at x = 0 and 5 facing north; the bounds leave room for the east end's bay
+  // only (x = 10), where the car starts.
+  Scene row = sceneWith({parkedCar("a", 0, 0, 90), parkedCar("b", 5, 0, 90)}, 10.0, 0.0, 90.0);
+  row.bounds = Aabb2{{-6.0, -30.0}, {30.0, 30.0}};
+  World world(row);
+  BayChain chain(row, 120.0);
+  ASSERT_EQ(chain.bays().size(), 1u);
+  EXPECT_FALSE(chain.next().has_value());
+  chain.observe(world);
+  std::vector<InputFrame> keys;
+  for (int i = 0; i < 600; ++i) {
+    world.step({});
+    chain.observe(world);
+  }
+  EXPECT_EQ(chain.count(), 1) << "standing in the only bay counts it once";
+  EXPECT_EQ(chain.current(), 0u);
+  driveStraightTo(world, chain, 8.0, keys, {10.0, 0.0}, {0.0, 1.0});
+  EXPECT_EQ(chain.count(), 1);
+  reverseTo(world, chain, 0.0, keys, {10.0, 0.0}, {0.0, 1.0});
+  ASSERT_LT((world.car().position - Eigen::Vector2d(10.0, 0.0)).norm(), 0.6)
+      << world.car().position.transpose();
+  for (int i = 0; i < 61; ++i) {
+    world.step({});
+    chain.observe(world);
+  }
+  EXPECT_EQ(chain.count(), 2) << "back in the bay after leaving it";
+  EXPECT_EQ(chain.score().count, 2);
+  // Parked within the 61 frames stood (the hold begins once the car is slow enough).
+  EXPECT_LE(chain.score().frames, chain.clockFrames());
+  EXPECT_GT(chain.score().frames, chain.clockFrames() - 61);
+}
+
+TEST(BayChain, MoreBaysThenSoonerIsTheBetterScore) {
+  const ChainScore three{3, 12000, 100.0};
+  EXPECT_TRUE(three.betterThan({2, 600, 5.0}));
+  EXPECT_FALSE((ChainScore{2, 600, 5.0}).betterThan(three));
+  EXPECT_TRUE((ChainScore{3, 11880, 99.0}).betterThan(three));
+  EXPECT_FALSE(three.betterThan(three)) << "a tie is no better";
+}
+
 TEST(BayChain, ParkingTwoBaysCountsTwoAndAReplayRepeatsIt) {
   // The car starts in bay 1 (A's west end), facing south; bay 2 (B's west end) lies 16 m ahead,
   // facing the other way round (either way counts in free drive).
@@ -187,7 +277,11 @@ TEST(BayChain, ParkingTwoBaysCountsTwoAndAReplayRepeatsIt) {
   }
   EXPECT_EQ(chain.count(), 2);
   EXPECT_EQ(chain.current(), 2u);
+  EXPECT_EQ(chain.next(), 3u);
   EXPECT_GT(chain.clockFrames(), 0);
+  EXPECT_LE(chain.score().frames, chain.clockFrames());
+  EXPECT_GT(chain.score().frames, chain.clockFrames() - 61) << "the second bay parked just now";
+  EXPECT_DOUBLE_EQ(chain.secondsLeft(), 180.0 - static_cast<double>(chain.clockFrames()) / 120.0);
   EXPECT_FALSE(chain.over());
 
   // The same keys again: the same count (the chain only observes the World).
@@ -216,7 +310,10 @@ TEST(BayChain, TheTimeLimitEndsTheChain) {
     chain.observe(world);
   }
   EXPECT_TRUE(chain.over());
+  EXPECT_TRUE(chain.timedOut());
+  EXPECT_FALSE(chain.wrecked());
   EXPECT_EQ(chain.clockFrames(), 120);
+  EXPECT_EQ(chain.secondsLeft(), 0.0);
   EXPECT_EQ(chain.count(), 0);
 }
 
