@@ -44,7 +44,35 @@ bool readScore(const nlohmann::json& j, ParkingScore& out) {
          out.stars >= 1 && out.stars <= kMaxStars;
 }
 
+// One bay chain entry; false when a field is missing, of the wrong type or out of range.
+bool readChain(const nlohmann::json& j, ChainScore& out) {
+  if (!j.is_object()) return false;
+  const auto count = j.find("count");
+  const auto frames = j.find("frames");
+  const auto seconds = j.find("seconds");
+  if (count == j.end() || frames == j.end() || seconds == j.end()) return false;
+  if (!count->is_number_integer() || !frames->is_number_integer() || !seconds->is_number()) {
+    return false;
+  }
+  out.count = count->get<int>();
+  out.frames = frames->get<std::int64_t>();
+  out.seconds = seconds->get<double>();
+  return out.count >= 1 && out.frames >= 0 && std::isfinite(out.seconds) && out.seconds >= 0.0;
+}
+
 }  // namespace
+
+bool BestScores::offerChain(const std::string& scene, const ChainScore& score) {
+  const auto it = chains.find(scene);
+  if (it != chains.end() && !score.betterThan(it->second)) return false;
+  chains[scene] = score;
+  return true;
+}
+
+const ChainScore* BestScores::findChain(const std::string& scene) const {
+  const auto it = chains.find(scene);
+  return it == chains.end() ? nullptr : &it->second;
+}
 
 bool BestScores::offer(const std::string& scene, const ParkingScore& score) {
   const auto it = by_scene.find(scene);
@@ -100,6 +128,15 @@ BestScores loadBestScores(const std::string& path, std::string& warning) {
     if (!readScore(entry, score)) return warn("bad entry for scene " + inQuotes(name));
     scores.by_scene[name] = score;
   }
+  // Optional: files written before free drive had its bay chain have none.
+  if (const auto chains = j.find("bay_chains"); chains != j.end()) {
+    if (!chains->is_object()) return warn("bay_chains is not an object");
+    for (const auto& [name, entry] : chains->items()) {
+      ChainScore chain;
+      if (!readChain(entry, chain)) return warn("bad bay chain for scene " + inQuotes(name));
+      scores.chains[name] = chain;
+    }
+  }
   return scores;
 }
 
@@ -109,7 +146,15 @@ std::string bestScoresText(const BestScores& scores) {
     by_scene[name] = {
         {"frames", s.frames}, {"seconds", s.seconds}, {"damage", s.damage}, {"stars", s.stars}};
   }
-  return nlohmann::json{{"format", kFormat}, {"scenes", by_scene}}.dump(2) + "\n";
+  nlohmann::json j{{"format", kFormat}, {"scenes", by_scene}};
+  if (!scores.chains.empty()) {
+    nlohmann::json chains = nlohmann::json::object();
+    for (const auto& [name, c] : scores.chains) {
+      chains[name] = {{"count", c.count}, {"frames", c.frames}, {"seconds", c.seconds}};
+    }
+    j["bay_chains"] = chains;
+  }
+  return j.dump(2) + "\n";
 }
 
 std::string saveBestScores(const std::string& path, const BestScores& scores) {

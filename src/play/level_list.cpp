@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "io/scene_json.hpp"
+#include "render/goal_overlay.hpp"
 
 namespace cardemo {
 
@@ -35,8 +36,8 @@ std::vector<LevelEntry> listLevels(const std::string& assets_folder,
   });
   const fs::path lot = fs::path(assets_folder) / "scenes" / "parking-lot.json";
   if (fs::is_regular_file(lot, ec)) {
-    levels.push_back({lot.lexically_normal().string(), "Free drive", "parking-lot", 0, true,
-                      "Drive anywhere in the lot: no bay, no timer"});
+    levels.push_back(
+        {lot.lexically_normal().string(), "Free drive", "parking-lot", 0, true, chainTaskText()});
   }
   return levels;
 }

@@ -10,7 +10,11 @@ std::vector<PickerRow> pickerRows(const std::vector<LevelEntry>& entries, const 
   std::vector<PickerRow> rows;
   for (const LevelEntry& e : entries) {
     if (e.free_drive) {
-      rows.push_back({e.title, "no goal", e.task});
+      const ChainScore* chain = best.findChain(e.scene_name);
+      rows.push_back({e.title,
+                      chain == nullptr ? std::string("bay chain: no best yet")
+                                       : "best " + chainScoreText(*chain),
+                      e.task});
       continue;
     }
     const ParkingScore* score = best.find(e.scene_name);

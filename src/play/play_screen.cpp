@@ -19,6 +19,7 @@ PlayScreen::PlayScreen(PlayScreenConfig config)
       effects_(session_.world()),
       rig_(session_.world(), config_.viewport),
       level_(session_.world(), config_.best_scores_path, keeps_best_),
+      chain_(session_.world(), config_.best_scores_path, keeps_best_),
       muted_(config_.muted) {
   if (!session_.recordError().empty()) {
     say(session_.recordError());
@@ -177,6 +178,7 @@ void PlayScreen::restart() {
   effects_.reset(session_.world());
   rig_.reset(session_.world());
   level_.restart(session_.world());
+  chain_.restart(session_.world());
   latch_.releaseAll();
   analog_.reset();
   flow_.restarted();
@@ -212,6 +214,13 @@ void PlayScreen::runSteps(int steps, const PadState& pad) {
       // Nothing more is simulated: publish this attempt's recording now, as GAME OVER does.
       (void)publishRecording();
     }
+    const int bays_before = chain_.chain() != nullptr ? chain_.chain()->count() : 0;
+    if (chain_.observe(session_.world())) {
+      writeSummary();
+      (void)publishRecording();
+    }
+    // Each bay of the chain parked chimes, as a level's bay does.
+    if (chain_.chain() != nullptr && chain_.chain()->count() > bays_before) out_.chime = true;
     if (config_.on_step) config_.on_step(session_.world().frame());
     // A replay that runs out mid-frame hands over at once, not after the frame's other steps.
     flow_.update(session_.playingBack(), ended());
@@ -221,6 +230,7 @@ void PlayScreen::runSteps(int steps, const PadState& pad) {
 
 void PlayScreen::reportAfterSteps() {
   if (std::string warning = level_.takeWarning(); !warning.empty()) say(std::move(warning));
+  if (std::string warning = chain_.takeWarning(); !warning.empty()) say(std::move(warning));
   reportRecordError();
   if (session_.world().gameOver() && !over_reported_) {
     over_reported_ = true;
@@ -251,9 +261,21 @@ void PlayScreen::compose(const Eigen::Vector2i& viewport) {
   draw.sprites = true;
   draw.goal = nullptr;
   if (const ParkingChallenge* challenge = level_.challenge()) {
-    goal_view_ = {challenge, level_.best(), level_.newBest(),
-                  endPanelKeys(config_.links, challenge->parkedFrame().has_value())};
+    goal_view_ = GoalView{};
+    goal_view_.challenge = challenge;
+    goal_view_.best = level_.best();
+    goal_view_.new_best = level_.newBest();
+    goal_view_.keys = endPanelKeys(config_.links, challenge->parkedFrame().has_value());
     draw.game_over_rows = runSummaryRows(world, goal_view_);
+    draw.goal = &goal_view_;
+  } else if (const BayChain* chain = chain_.chain()) {
+    goal_view_ = GoalView{};
+    goal_view_.challenge = &chain->challenge();
+    goal_view_.new_best = chain_.newBest();
+    goal_view_.keys = endPanelKeys(config_.links, false);
+    goal_view_.chain = chain;
+    goal_view_.chain_best = chain_.best();
+    draw.game_over_rows = chainSummaryRows(world, goal_view_);
     draw.goal = &goal_view_;
   }
 }
@@ -273,11 +295,23 @@ void PlayScreen::notePublished(bool was_recording) {
 
 void PlayScreen::writeSummary() {
   if (config_.json_path.empty()) return;
-  const std::string text = summaryJson(session_.world(), level_.challenge()).dump(2) + "\n";
+  const std::string text = summary().dump(2) + "\n";
   if (std::string why = writeFileAtomically(config_.json_path, text); !why.empty()) {
     say(std::move(why));
     status_ = 2;
   }
+}
+
+nlohmann::json PlayScreen::summary() const {
+  nlohmann::json j = summaryJson(session_.world(), level_.challenge());
+  if (const BayChain* chain = chain_.chain()) {
+    nlohmann::json& c = j["bay_chain"] = bayChainJson(*chain);
+    // The best as the end panel shows it: this chain's when it was just saved as the best.
+    const std::optional<ChainScore> best = chain_.newBest() ? chain->score() : chain_.best();
+    c["best"] = best ? nlohmann::json(best->count) : nlohmann::json(nullptr);
+    c["new_best"] = chain_.newBest();
+  }
+  return j;
 }
 
 void PlayScreen::reportRecordError() {

@@ -7,10 +7,12 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "play/analog_drive.hpp"
+#include "play/chain_run.hpp"
 #include "play/fixed_step_clock.hpp"
 #include "play/game_session.hpp"
 #include "play/input_latch.hpp"
@@ -52,13 +54,14 @@ struct GameOutcome {
   int last_attempt = 1;               ///< Number of the last attempt played (recording paths).
 };
 
-/// One level from start to leave. Construct it, check ready(), call frame() once per drawn frame
-/// until its exit is not kStay (or the platform is told to stop), then finish(). After every
-/// call, takeMessages() gives the lines for standard error.
+/// One level (or free drive, with its bay chain when the scene has free bays) from start to leave.
+/// Construct it, check ready(), call frame() once per drawn frame until its exit is not kStay (or
+/// the platform is told to stop), then finish(). After every call, takeMessages() gives the lines
+/// for standard error.
 ///
 /// Writes: the recording of each attempt is published when the attempt ends (GAME OVER, PARKED,
-/// TIME UP, restart, leaving); the summary JSON is written when an attempt ends and again by
-/// finish(), so the file left describes the last attempt.
+/// TIME UP (a level's or the bay chain's), restart, leaving); the summary JSON is written when an
+/// attempt ends and again by finish(), so the file left describes the last attempt.
 class PlayScreen {
  public:
   /// Most fixed steps per frame: a slower frame drops time instead of spiralling.
@@ -100,6 +103,11 @@ class PlayScreen {
   [[nodiscard]] const GameSession& session() const { return session_; }
   /// The level's challenge and best score.
   [[nodiscard]] const LevelRun& level() const { return level_; }
+  /// Free drive's bay chain and best (no chain in a level or a lot without free bays).
+  [[nodiscard]] const ChainRun& chain() const { return chain_; }
+  /// The attempt has ended (GAME OVER, PARKED, TIME UP): nothing more is simulated until a
+  /// restart.
+  [[nodiscard]] bool ended() const { return session_.ended() || level_.over() || chain_.over(); }
   /// The user's zoom factor (1 at the start).
   [[nodiscard]] double userZoom() const { return zoom_ / kDefaultZoom; }
 
@@ -121,7 +129,7 @@ class PlayScreen {
   void runSteps(int steps, const PadState& pad);
   void reportAfterSteps();
   void compose(const Eigen::Vector2i& viewport);
-  [[nodiscard]] bool ended() const { return session_.ended() || level_.over(); }
+  [[nodiscard]] nlohmann::json summary() const;
   std::string publishRecording();
   void notePublished(bool was_recording);
   void writeSummary();
@@ -135,6 +143,7 @@ class PlayScreen {
   Effects effects_;
   CameraRig rig_;
   LevelRun level_;
+  ChainRun chain_;
   InputLatch latch_;
   AnalogDrive analog_;
   PlayFlow flow_;

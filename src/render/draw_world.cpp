@@ -38,11 +38,16 @@ void drawFrame(Canvas& canvas, const World& world, const Camera& camera, const O
   const std::string banner =
       !options.banner.empty() ? options.banner : (options.paused ? "PAUSED" : "");
   if (options.help) {
+    // The goal's task (a level's, or the bay chain's); a level drawn without its goal has its own.
     const std::optional<LevelInfo>& level = world.scene().level;
+    const std::optional<GoalTask> task =
+        options.goal != nullptr ? goalTask(world, *options.goal)
+        : level                 ? std::optional<GoalTask>(GoalTask{level->title, level->task})
+                                : std::nullopt;
     // The game waits while the help is shown: it may cover the HUD, so its room is the window.
     const Eigen::Vector2f margin = Eigen::Vector2f::Constant(8.0f * hudScale(canvas.size()));
     room.area = ScreenBox(margin, canvas.size().cast<float>() - margin);
-    (void)drawHelp(canvas, banner, level ? level->task : std::string(), room);
+    (void)drawHelp(canvas, banner, task ? task->task : std::string(), room);
   } else {
     (void)drawBanner(canvas, banner, room);
   }

@@ -21,6 +21,7 @@ constexpr Rgba kTarget{255, 214, 70, 255};
 constexpr Rgba kTargetReady{90, 230, 120, 255};
 constexpr Rgba kHoldTrough{55, 58, 64, 255};
 constexpr Rgba kWarning{255, 110, 95, 255};
+constexpr Rgba kNextBay{255, 214, 70, 90};  // kTarget, faint
 using hud_colors::kDim;
 using hud_colors::kPanel;
 using hud_colors::kText;
@@ -66,18 +67,26 @@ std::string joined(const std::vector<std::string>& parts, const char* separator)
   return out;
 }
 
-// The timer panel at the top centre: the level clock, the detail line, and near the bay the
-// readout of what is still off or, while the checks hold, a bar filling over the hold time.
-void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
+// The timer panel at the top centre: the level clock (a bay chain's time left), the detail line,
+// and near the bay the readout of what is still off or, while the checks hold, a bar filling over
+// the hold time.
+void drawTimer(Canvas& canvas, const GoalView& view) {
+  const ParkingChallenge& challenge = *view.challenge;
   const Eigen::Vector2i vp = canvas.size();
   const TimerMetrics m = timerMetrics(vp);
-  const std::string time = secondsText(challenge.seconds());
-  const std::string detail = timerDetail(challenge);
+  const BayChain* chain = view.chain;
+  const std::string time = chain != nullptr ? secondsText(chain->secondsLeft()) + " left"
+                                            : secondsText(challenge.seconds());
+  const std::string detail = chain != nullptr ? chainDetail(view) : timerDetail(challenge);
+  // The chain's challenge never sees the chain end: nothing is off once it has.
+  const bool running = !challenge.over() && (chain == nullptr || !chain->over());
   // A fresh miss says so in red where the bay readout goes; it matters more.
   const std::optional<std::string> warning = freshGateWarning(challenge);
-  const std::string readout = warning ? *warning : joined(bayReadout(challenge), "   ");
+  const std::string readout = !running  ? std::string()
+                              : warning ? *warning
+                                        : joined(bayReadout(challenge), "   ");
   const bool holding =
-      !challenge.over() && challenge.holdStart().has_value() && challenge.holdSeconds() > 0.0;
+      running && challenge.holdStart().has_value() && challenge.holdSeconds() > 0.0;
   const bool extra = !readout.empty() || holding;
   const float ts = canvas.textSize(time, m.big).x();
   const float ds = canvas.textSize(detail, m.small).x();
@@ -108,25 +117,26 @@ void drawTimer(Canvas& canvas, const ParkingChallenge& challenge) {
   }
 }
 
-// Seconds the level's task is still shown for: the first kTaskSeconds of play and, after that,
-// until the car first moves (the clock starts), then half a second more to fade.
-double taskSecondsLeft(const World& world, const ParkingChallenge& challenge) {
+// Seconds the task is still shown for: the first kTaskSeconds of play and, after that, until the
+// car first moves (the level's or the chain's clock starts), then half a second more to fade.
+double taskSecondsLeft(const World& world, const GoalView& view) {
   const double hz = world.settings().hz;
   const double now = static_cast<double>(world.frame()) / hz;
-  const std::optional<std::int64_t> start = challenge.clockStart();
+  // The chain's clock, not its current bay's: a bay parked without moving on is no new start.
+  const std::optional<std::int64_t> start =
+      view.chain != nullptr ? view.chain->clockStart() : view.challenge->clockStart();
   if (!start) return std::max(kTaskSeconds - now, 0.5);
   return std::max(kTaskSeconds, static_cast<double>(*start) / hz + 0.5) - now;
 }
 
-// The level's title and task at the start of an attempt (taskSecondsLeft), centred across the
-// screen at the top of `area`, or where placeClear() finds room in it clear of `avoid` (the car
-// and the bay); fades out over its last half second. Returns its box when drawn.
-std::optional<ScreenBox> drawTaskPanel(Canvas& canvas, const World& world,
-                                       const ParkingChallenge& challenge, const ScreenBox& area,
-                                       std::span<const ScreenBox> avoid) {
-  const std::optional<LevelInfo>& level = world.scene().level;
-  if (!level || level->task.empty()) return std::nullopt;
-  const double left = taskSecondsLeft(world, challenge);
+// The title and task at the start of an attempt (taskSecondsLeft), centred across the screen at
+// the top of `area`, or where placeClear() finds room in it clear of `avoid` (the car and the
+// bay); fades out over its last half second. Returns its box when drawn.
+std::optional<ScreenBox> drawTaskPanel(Canvas& canvas, const World& world, const GoalView& view,
+                                       const ScreenBox& area, std::span<const ScreenBox> avoid) {
+  const std::optional<GoalTask> level = goalTask(world, view);
+  if (!level) return std::nullopt;
+  const double left = taskSecondsLeft(world, view);
   if (left <= 0.0) return std::nullopt;
   const float fade = static_cast<float>(std::min(1.0, left / 0.5));
   const auto faded = [fade](Rgba c) {
@@ -136,7 +146,7 @@ std::optional<ScreenBox> drawTaskPanel(Canvas& canvas, const World& world,
   const Eigen::Vector2i vp = canvas.size();
   const float s = hudScale(vp);
   const float gap = 10.0f * s;
-  const std::string heading = "Level " + std::to_string(level->order) + ": " + level->title;
+  const std::string& heading = level->title;
   // The task is one line: in a narrow window its text is smaller from the start.
   const float room = static_cast<float>(vp.x()) - 2.0f * (gap + 12.0f * s);
   const float natural = canvas.textSize(level->task, roundPx(22.0f * s)).x();
@@ -221,6 +231,64 @@ std::string timerDetail(const ParkingChallenge& challenge) {
   return detail;
 }
 
+std::string chainTaskText(const BayChainSettings& settings) {
+  char task[96];
+  std::snprintf(task, sizeof task,
+                "Park in the highlighted bay, then the next: as many as you can in %g s",
+                settings.time_limit);
+  return task;
+}
+
+std::optional<GoalTask> goalTask(const World& world, const GoalView& view) {
+  if (view.chain != nullptr) return GoalTask{"Free drive", chainTaskText(view.chain->settings())};
+  const std::optional<LevelInfo>& level = world.scene().level;
+  if (!level || level->task.empty()) return std::nullopt;
+  return GoalTask{"Level " + std::to_string(level->order) + ": " + level->title, level->task};
+}
+
+std::string chainScoreText(const ChainScore& score) {
+  return std::to_string(score.count) + (score.count == 1 ? " bay in " : " bays in ") +
+         secondsText(score.seconds);
+}
+
+std::string chainDetail(const GoalView& view) {
+  const BayChain& chain = *view.chain;
+  const std::string parked = std::to_string(chain.count()) + " parked";
+  if (chain.timedOut()) return "time up   " + parked;
+  if (chain.wrecked()) return "wrecked   " + parked;
+  std::string detail = parked;
+  detail += view.chain_best ? "   best " + std::to_string(view.chain_best->count) : "";
+  const ParkingChallenge& c = *view.challenge;
+  char text[64];
+  if (c.holdStart()) {
+    std::snprintf(text, sizeof text, "   hold %.1f / %.1f s", c.heldSeconds(), c.holdSeconds());
+  } else {
+    std::snprintf(text, sizeof text, "   bay %.1f m", c.lastCheck().distance);
+  }
+  return detail + text;
+}
+
+std::vector<std::pair<std::string, std::string>> chainSummaryRows(const World& world,
+                                                                  const GoalView& view) {
+  const BayChain& chain = *view.chain;
+  std::vector<std::pair<std::string, std::string>> rows;
+  rows.emplace_back("Bays parked", std::to_string(chain.count()));
+  if (chain.timedOut()) {
+    rows.emplace_back("Ended", "time limit " + secondsText(chain.settings().time_limit));
+  } else {
+    rows.emplace_back("Ended", kWreckedText);
+  }
+  rows.emplace_back("Damage", std::to_string(world.scene().player.health - world.health()));
+  if (view.new_best) {
+    rows.emplace_back("Best", "new best!");
+  } else if (view.chain_best) {
+    rows.emplace_back("Best", chainScoreText(*view.chain_best));
+  } else {
+    rows.emplace_back("Best", "none yet");
+  }
+  return rows;
+}
+
 std::string starsText(int stars) {
   std::string out;
   for (int i = 0; i < kMaxStars; ++i) out += i < stars ? kStarEarned : kStarMissed;
@@ -291,6 +359,16 @@ void drawGoalBay(Canvas& canvas, const Camera& camera, const GoalView& view) {
   const Eigen::Vector2d dir = unitFromDegrees(goal.bay.heading_deg);
   bayArrow(canvas, camera, goal, dir, color);
   if (goal.either_direction) bayArrow(canvas, camera, goal, -dir, color);
+  // The chain's next bay, faint: where to head once this one is parked. Only the next: its order
+  // is fixed, and the outlines of every free bay would clutter the lot.
+  if (view.chain != nullptr && !view.chain->over()) {
+    if (const std::optional<std::size_t> next = view.chain->next()) {
+      const ParkingBay& bay = view.chain->bays()[*next].bay;
+      const Obb2 box = Obb2::fromDegrees(bay.center, bay.heading_deg, bay.length, bay.width);
+      outline(canvas, projectObb(camera, box), std::max(1.0f, 1.5f * hudScale(canvas.size())),
+              kNextBay);
+    }
+  }
 }
 
 std::vector<ScreenBox> keepClearBoxes(const Camera& camera, const Obb2& player_box,
@@ -324,11 +402,13 @@ std::optional<ScreenBox> drawGoalOverlay(Canvas& canvas, const World& world, con
     fillRect(canvas, label - Eigen::Vector2f{4.0f, 2.0f}, ts + Eigen::Vector2f{8.0f, 4.0f}, kPanel);
     canvas.text(label, text, h, kTarget);
   }
-  drawTimer(canvas, c);
+  drawTimer(canvas, view);
   std::optional<ScreenBox> task;
-  if (show_task && !c.over()) {
+  const bool chain_over = view.chain != nullptr && view.chain->over();
+  if (show_task && !c.over() && !chain_over) {
     const std::vector<ScreenBox> avoid = keepClearBoxes(camera, player_box, &view);
-    task = drawTaskPanel(canvas, world, c, area.isEmpty() ? panelArea(canvas.size()) : area, avoid);
+    task =
+        drawTaskPanel(canvas, world, view, area.isEmpty() ? panelArea(canvas.size()) : area, avoid);
   }
   const std::string keys = view.keys.empty() ? std::string("Enter restart    Esc quit") : view.keys;
   if (c.parkedFrame()) {
@@ -338,6 +418,11 @@ std::optional<ScreenBox> drawGoalOverlay(Canvas& canvas, const World& world, con
     drawEndPanel(
         canvas, camera, player_box,
         {"TIME UP", {255, 90, 80, 255}, {60, 10, 12, 215}, runSummaryRows(world, view), keys});
+  } else if (view.chain != nullptr && view.chain->timedOut()) {
+    // Wrecked, the GAME OVER panel says it (DrawOptions::game_over_rows: chainSummaryRows).
+    drawEndPanel(
+        canvas, camera, player_box,
+        {"TIME UP", {255, 214, 70, 255}, {40, 34, 10, 215}, chainSummaryRows(world, view), keys});
   }
   return task;
 }

@@ -171,10 +171,14 @@ void drawMarkings(Canvas& canvas, const Camera& camera, const Scene& scene,
             static_cast<float>(std::min(1.2, 0.45 * len) * ppm), palette.paint);
     }
   }
-  if (!scene.goal) return;
-  const ParkingBay& bay = scene.goal->bay;
+  if (scene.goal) drawGoalPaint(canvas, camera, scene.goal->bay, palette);
+}
+
+void drawGoalPaint(Canvas& canvas, const Camera& camera, const ParkingBay& bay,
+                   const Palette& palette) {
+  const double ppm = camera.pixels_per_metre;
   const Obb2 box = Obb2::fromDegrees(bay.center, bay.heading_deg, bay.length, bay.width);
-  if (!box.aabb().overlaps(view)) return;
+  if (!box.aabb().overlaps(visibleWorld(camera))) return;
   const auto corners = projectObb(camera, box);
   Rgba fill = palette.goal_bay;
   fill.a = 45;

@@ -23,6 +23,11 @@ void drawBayLines(Canvas& canvas, const Camera& camera, const Scene& scene, cons
 /// and a P in the middle).
 void drawMarkings(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette);
 
+/// A goal bay's paint: a tinted box with a bright frame and a P in the middle (a level's goal, or
+/// the bay chain's highlighted bay).
+void drawGoalPaint(Canvas& canvas, const Camera& camera, const ParkingBay& bay,
+                   const Palette& palette);
+
 /// The four walls outside `bounds`, with alternating kerb blocks along their inner edge.
 void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& bounds, const Palette& palette);
 

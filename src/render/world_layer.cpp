@@ -110,6 +110,10 @@ void drawWorldLayer(Canvas& canvas, const World& world, const Camera& camera,
   drawMarkings(canvas, camera, scene, palette);
   // Paint on the ground, so the cars drive over it.
   if (options.goal != nullptr) {
+    // A level's bay is painted with the scene's markings; the chain's moves from bay to bay.
+    if (options.goal->chain != nullptr && !options.goal->chain->over()) {
+      drawGoalPaint(canvas, camera, options.goal->challenge->goal().bay, palette);
+    }
     drawGoalBay(canvas, camera, *options.goal);
     drawGates(canvas, camera, *options.goal->challenge);
   }

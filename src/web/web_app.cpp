@@ -247,12 +247,14 @@ void WebApp::showWorld(const World& world) {
 void WebApp::showOutcome() {
   const World& world = screen_->session().world();
   const ParkingChallenge* challenge = screen_->level().challenge();
+  const BayChain* chain = screen_->chain().chain();
   std::string outcome = world.gameOver()                        ? "GAME OVER"
                         : challenge && challenge->parkedFrame() ? "PARKED"
                         : challenge && challenge->timedOut()    ? "TIME UP"
+                        : chain && chain->timedOut()            ? "TIME UP"
                         : screen_->session().playingBack()      ? "watching"
                                                                 : "driving";
-  const bool over = screen_->level().over() || world.gameOver();
+  const bool over = screen_->ended();
   if (over && !was_over_) cardemo_page_save_best(paths_.best_scores.c_str());
   was_over_ = over;
   if (outcome == outcome_) return;

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -82,6 +83,44 @@ TEST(BestScores, OfferKeepsOnlyBetterScores) {
   EXPECT_EQ(b.find("other"), nullptr);
 }
 
+TEST(BestScores, OfferChainKeepsMoreBaysThenSooner) {
+  BestScores b;
+  EXPECT_TRUE(b.offerChain("lot", {3, 12000, 100.0}));
+  EXPECT_FALSE(b.offerChain("lot", {2, 600, 5.0}));      // fewer bays
+  EXPECT_FALSE(b.offerChain("lot", {3, 12000, 100.0}));  // equal is not better
+  EXPECT_TRUE(b.offerChain("lot", {3, 11880, 99.0}));    // as many, sooner
+  EXPECT_EQ(b.findChain("lot")->frames, 11880);
+  EXPECT_EQ(b.findChain("other"), nullptr);
+  EXPECT_EQ(b.find("lot"), nullptr) << "a chain is not a level's score";
+}
+
+TEST(BestScores, ChainsRoundTripBesideTheLevelsAndAreLeftOutWhenNone) {
+  const fs::path dir = testing::freshTempDir("best_test_chains");
+  const std::string path = (dir / "best-scores.json").string();
+  BestScores b;
+  ASSERT_TRUE(b.offer("level-1-straight", {529, 529.0 / 120.0, 0, 3}));
+  EXPECT_EQ(bestScoresText(b).find("bay_chains"), std::string::npos);
+  ASSERT_TRUE(b.offerChain("parking-lot", {4, 14321, 14321.0 / 120.0}));
+  ASSERT_EQ(saveBestScores(path, b), "");
+  const nlohmann::json j = nlohmann::json::parse(bestScoresText(b));
+  EXPECT_EQ(j["format"], "cardemo-best/1");
+  EXPECT_EQ(j["bay_chains"]["parking-lot"]["count"], 4);
+  std::string warning;
+  const BestScores read = loadBestScores(path, warning);
+  EXPECT_EQ(warning, "");
+  ASSERT_NE(read.findChain("parking-lot"), nullptr);
+  EXPECT_EQ(read.findChain("parking-lot")->count, 4);
+  EXPECT_EQ(read.findChain("parking-lot")->frames, 14321);
+  EXPECT_EQ(read.findChain("parking-lot")->seconds, 14321.0 / 120.0);
+  EXPECT_EQ(read.find("level-1-straight")->frames, 529);
+  // Saving a level's score again keeps the chains (both live in the one file).
+  BestScores again = read;
+  ASSERT_TRUE(again.offer("level-1-straight", {500, 500.0 / 120.0, 0, 3}));
+  ASSERT_EQ(saveBestScores(path, again), "");
+  EXPECT_EQ(loadBestScores(path, warning).findChain("parking-lot")->count, 4);
+  fs::remove_all(dir);
+}
+
 TEST(BestScores, SaveCreatesTheFolderAndLoadReadsItBack) {
   const fs::path dir = testing::freshTempDir("best_test_roundtrip");
   const EnvGuard xdg("XDG_DATA_HOME", dir.string());
@@ -136,11 +175,21 @@ TEST(BestScores, CorruptFilesAreIgnoredWithOneLineWarning) {
            std::string("{\"format\": \"cardemo-best/1\", \"scenes\": {\"a\": {\"frames\": -1, "
                        "\"seconds\": 1, \"damage\": 0, \"stars\": 1}}}"),
            std::string("{\"format\": \"cardemo-best/1\", \"scenes\": {\"a\": {\"frames\": 1}}}"),
+           "{\"format\": \"cardemo-best/1\", \"scenes\": {\"a\": " + good_entry +
+               "}, \"bay_chains\": []}",
+           "{\"format\": \"cardemo-best/1\", \"scenes\": {\"a\": " + good_entry +
+               "}, \"bay_chains\": {\"lot\": {\"count\": 0, \"frames\": 0, \"seconds\": 0}}}",
+           "{\"format\": \"cardemo-best/1\", \"scenes\": {\"a\": " + good_entry +
+               "}, \"bay_chains\": {\"lot\": {\"count\": 2, \"seconds\": 3}}}",
+           "{\"format\": \"cardemo-best/1\", \"scenes\": {\"a\": " + good_entry +
+               "}, \"bay_chains\": {\"lot\": {\"count\": 2, \"frames\": 360, "
+               "\"seconds\": \"3\"}}}",
        }) {
     writeText(path, text);
     std::string warning;
     const BestScores b = loadBestScores(path.string(), warning);
     EXPECT_TRUE(b.by_scene.empty()) << text;
+    EXPECT_TRUE(b.chains.empty()) << text;
     EXPECT_NE(warning.find(path.string() + ": "), std::string::npos) << text;
     EXPECT_NE(warning.find("best scores ignored"), std::string::npos) << text;
     EXPECT_EQ(warning.find('\n'), std::string::npos) << text;

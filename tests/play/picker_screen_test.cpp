@@ -26,7 +26,10 @@ TEST(PickerScreen, RowsShowOrderTitleBestAndTask) {
   EXPECT_EQ(rows[0].task, "Park ahead");
   EXPECT_EQ(rows[1].detail, "12.3 s  \xE2\x98\x85\xE2\x98\x85\xE2\x98\x86");
   EXPECT_EQ(rows[2].title, "Free drive");
-  EXPECT_EQ(rows[2].detail, "no goal");
+  EXPECT_EQ(rows[2].detail, "bay chain: no best yet");
+  (void)best.offerChain("parking-lot", {4, 20424, 170.2});
+  EXPECT_EQ(pickerRows(threeEntries(), best)[2].detail, "best 4 bays in 170.2 s");
+  EXPECT_EQ(pickerRows(threeEntries(), best)[1].detail, rows[1].detail) << "a chain is no level";
   const PickerScreen picker(threeEntries(), best, 0);
   EXPECT_EQ(picker.progress(), progressText(levelProgress(threeEntries(), best)));
   EXPECT_EQ(picker.rows().size(), 3u);

@@ -32,7 +32,7 @@ class ScreenDriver {
     for (int i = 0; i < max_frames && !ended(); ++i) (void)frame({}, kStep);
   }
   /// The run has ended (GAME OVER, PARKED, TIME UP).
-  [[nodiscard]] bool ended() const { return screen_.session().ended() || screen_.level().over(); }
+  [[nodiscard]] bool ended() const { return screen_.ended(); }
   /// The screen.
   PlayScreen& screen() { return screen_; }
   /// The world's frame.

@@ -157,15 +157,11 @@ ScreenBox screenBoxOf(const Camera& camera, const Obb2& box) {
   return {lo, hi};
 }
 
-// Draws the frame with PAUSED, then with the help, each time with the level's task (a challenge
-// that has just started watching, so the clock has not run), and checks that none of the three
-// panels covers the car or the bay.
-void expectPanelsClear(const World& world, const Camera& camera, const std::string& what) {
-  const Goal& goal = *world.scene().goal;
-  ParkingChallenge fresh(goal, world.settings().hz, world.scene().player.health);
-  fresh.observe(world);
-  GoalView view;
-  view.challenge = &fresh;
+// Draws the frame with PAUSED, then with the help, each time with the task (`view`'s, whose
+// clock has not run), and checks that none of the three panels covers the car or the bay.
+void expectPanelsClear(const World& world, const Camera& camera, const GoalView& view,
+                       const std::string& task, const std::string& what) {
+  const Goal& goal = view.challenge->goal();
   const ScreenBox car = screenBoxOf(camera, world.carBox());
   const ScreenBox bay = screenBoxOf(camera, Obb2::fromDegrees(goal.bay.center, goal.bay.heading_deg,
                                                               goal.bay.length, goal.bay.width));
@@ -179,7 +175,7 @@ void expectPanelsClear(const World& world, const Camera& camera, const std::stri
     drawFrame(canvas, world, camera, world.carBox(), options);
     // With the help, the task is in it (and not drawn again beside it).
     std::vector<std::string> texts{help ? "Keys" : "PAUSED"};
-    if (!help) texts.push_back(world.scene().level->task);
+    if (!help) texts.push_back(task);
     for (const std::string& text : texts) {
       const std::optional<ScreenBox> panel = backdropBox(canvas, text);
       ASSERT_TRUE(panel.has_value()) << what << ": no panel behind \"" << text << "\"";
@@ -189,6 +185,15 @@ void expectPanelsClear(const World& world, const Camera& camera, const std::stri
       EXPECT_TRUE(ScreenBox(Eigen::Vector2f::Zero(), vp).contains(*panel)) << what << " " << text;
     }
   }
+}
+
+// A level's: a challenge that has just started watching, so the clock has not run.
+void expectPanelsClear(const World& world, const Camera& camera, const std::string& what) {
+  ParkingChallenge fresh(*world.scene().goal, world.settings().hz, world.scene().player.health);
+  fresh.observe(world);
+  GoalView view;
+  view.challenge = &fresh;
+  expectPanelsClear(world, camera, view, world.scene().level->task, what);
 }
 
 TEST(PanelPlace, NoPanelCoversTheBayOrTheCarInAnyLevel) {
@@ -223,6 +228,48 @@ TEST(PanelPlace, NoPanelCoversTheBayOrTheCarInAnyLevel) {
     }
   }
   EXPECT_GE(levels, 6);
+}
+
+// Free drive: each bay of the lot's chain highlighted in turn, along the bundled drives of the
+// lot, at two window sizes. (The chain's clock is the one of a chain that has just started
+// watching, so its task is drawn.)
+TEST(PanelPlace, NoPanelCoversTheHighlightedBayOrTheCarInFreeDrive) {
+  const std::filesystem::path assets = std::filesystem::path(CARDEMO_SOURCE_DIR) / "assets";
+  int checked = 0;
+  for (const char* name : {"demo", "head-on", "reverse"}) {
+    const Parsed<Replay> replay = loadReplay((assets / "replays" / name).string() + ".replay");
+    ASSERT_TRUE(replay.ok()) << replay.error().toString();
+    const Parsed<Scene> scene = loadScene((assets / "scenes/parking-lot.json").string());
+    ASSERT_TRUE(scene.ok()) << scene.error().toString();
+    for (const Eigen::Vector2i& vp : {Eigen::Vector2i(1024, 768), Eigen::Vector2i(1280, 720)}) {
+      World world(scene.value(), settingsForReplay(replay.value()));
+      CameraRig rig(world, vp);
+      std::int64_t frame = 0;
+      for (const InputRun& run : replay.value().runs) {
+        for (std::int64_t i = 0; i < run.count; ++i, ++frame) {
+          if (frame % 240 == 0) {
+            const BayChain chain = startBayChain(world);
+            ASSERT_EQ(chain.bays().size(), 6u);
+            for (const FreeBay& bay : chain.bays()) {
+              ParkingChallenge highlighted(chainGoal(bay.bay, chain.settings()),
+                                           world.settings().hz, world.scene().player.health);
+              highlighted.observe(world);
+              GoalView view;
+              view.challenge = &highlighted;
+              view.chain = &chain;
+              expectPanelsClear(world, rig.camera(vp), view, chainTaskText(),
+                                std::string(name) + " frame " + std::to_string(frame) + " " +
+                                    bay.id + " " + std::to_string(vp.x()));
+              ++checked;
+            }
+          }
+          world.step(run.keys);
+          rig.step(world);
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
 }
 
 }  // namespace
