@@ -28,6 +28,7 @@ struct RenderOptions {
   bool paused = false;
   bool sprites = false;
   bool rig = false;
+  bool bay_chain = false;
   bool zoom_given = false;
   int width = 1280;
   int height = 720;
@@ -48,17 +49,19 @@ int fail(const std::string& message) {
   return 2;
 }
 
-// What watches the world step by step, as the window's do: hit feedback, the camera rig and the
-// level's challenge (its timer, readout and end panel are drawn).
+// What watches the world step by step, as the window's do: hit feedback, the camera rig, the
+// level's challenge and free drive's bay chain (their timer, readout and end panel are drawn).
 struct Observers {
   Effects effects;
   CameraRig rig;
   std::optional<ParkingChallenge> challenge;
+  std::optional<BayChain> chain;
   void step(World& world, const InputFrame& input) {
     world.step(input);
     effects.observe(world);
     rig.step(world);
     if (challenge) challenge->observe(world);
+    if (chain) chain->observe(world);
   }
 };
 
@@ -90,7 +93,12 @@ int runRenderCommand(const RenderOptions& options) {
   const Eigen::Vector2i viewport{options.width, options.height};
   auto watch = [&] {
     observers.emplace(
-        Observers{Effects(*world), CameraRig(*world, viewport), startChallenge(*world)});
+        Observers{Effects(*world), CameraRig(*world, viewport), startChallenge(*world), {}});
+    // As the game: the chain only on a scene without a goal, and with a free bay.
+    if (options.bay_chain && !observers->challenge) {
+      BayChain chain = startBayChain(*world);
+      if (!chain.bays().empty()) observers->chain.emplace(std::move(chain));
+    }
   };
   if (isReplayFile(options.input)) {
     const Parsed<Replay> replay = loadReplay(options.input);
@@ -140,6 +148,11 @@ int runRenderCommand(const RenderOptions& options) {
   if (observers->challenge) {
     goal.challenge = &*observers->challenge;
     settings.options.goal = &goal;
+  } else if (observers->chain) {
+    goal.challenge = &observers->chain->challenge();
+    goal.chain = &*observers->chain;
+    settings.options.goal = &goal;
+    settings.options.game_over_rows = chainSummaryRows(*world, goal);
   }
   settings.options.status = baseName(options.input) + "  -  " + world->scene().name;
   if (std::string why = renderPng(*world, settings, options.out); !why.empty()) return fail(why);
@@ -174,6 +187,9 @@ void addRenderCommand(CLI::App& app, int& exit_code) {
   sub->add_flag(
       "--sprites", options->sprites,
       "Draw cars, tyres and ground with the sprites in assets/sprites (default: vectors)");
+  sub->add_flag("--bay-chain", options->bay_chain,
+                "Free drive's bay chain on a scene without a goal: the highlighted bay, the next, "
+                "the time left and the count, as the game draws them");
   sub->add_flag("--rig", options->rig,
                 "Frame the picture as the game does: look-ahead, speed zoom, held inside the walls "
                 "(zoom fitted to the scene unless --zoom is given)")

@@ -160,6 +160,25 @@ TEST(RenderCommand, DebugOverlayChangesTheImage) {
   EXPECT_FALSE(samePixels(*a, *b));
 }
 
+TEST(RenderCommand, BayChainHighlightsTheLotsFirstFreeBay) {
+  // The lot's first free bay (x = -40, y = 8, 5.5 m along y) centred at 12 px/m: its heading
+  // arrows (either way round counts) are yellow 23 px above and below the centre.
+  const fs::path plain = scratch("lot-plain.png");
+  const fs::path chain = scratch("lot-chain.png");
+  const std::string at = " --center -40 8 --zoom 12 --out '";
+  ASSERT_EQ(render("'" + kLot + "'" + at + plain.string() + "'").status, 0);
+  const CommandResult run = render("'" + kLot + "' --bay-chain" + at + chain.string() + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const Surface a = loadRgba(plain);
+  const Surface b = loadRgba(chain);
+  ASSERT_TRUE(a && b);
+  const Rgba arrow{255, 214, 70};
+  for (const int y : {337, 383}) {
+    EXPECT_TRUE(near(pixel(*b, 640, y), arrow)) << y << " " << str(pixel(*b, 640, y));
+    EXPECT_FALSE(near(pixel(*a, 640, y), arrow)) << y << " " << str(pixel(*a, 640, y));
+  }
+}
+
 TEST(RenderCommand, MissingInputIsExit2WithTheFileName) {
   const CommandResult run = render("/no/such/scene.json --out '" + scratch("x.png").string() + "'");
   EXPECT_EQ(run.status, 2);
