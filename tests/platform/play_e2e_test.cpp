@@ -471,6 +471,60 @@ TEST_F(PlayE2e, AfterAReplayTheGameWaitsForThePlayer) {
   EXPECT_EQ(game->wait(10s), 0) << slurp(log);
 }
 
+// Free drive in the window: the car starts in the lot's first free bay and stands there (the
+// chain counts it), then drives off; the summary reports the chain, and the recording replays
+// headless with --bay-chain to the same count, bay, clock and hash.
+TEST_F(PlayE2e, FreeDriveCountsABayAndItsRecordingReplaysToTheSameCount) {
+  nlohmann::json scene = loadJson(slurp(kLot));
+  ASSERT_TRUE(scene.is_object());
+  scene["player"]["x"] = -40;
+  scene["player"]["y"] = 8;
+  scene["player"]["heading_deg"] = 270;
+  const fs::path lot = dir_ / "lot.json";
+  std::ofstream(lot) << scene.dump(1);
+  const fs::path record = dir_ / "chain.replay";
+  const fs::path json = dir_ / "chain.json";
+  const fs::path xdg = dir_ / "xdg";
+  const fs::path log = dir_ / "play.log";
+  auto game =
+      startGame({lot.string(), "--record", record.string(), "--json", json.string(), "--progress"},
+                "play.log", {"XDG_DATA_HOME=" + xdg.string()});
+  ASSERT_TRUE(game->running()) << slurp(log);
+  // Parked after the 0.5 s hold (60 frames); then Up for half a second of frames.
+  ASSERT_TRUE(waitForFrame(log, 90, 60s)) << slurp(log);
+  shell(display_, "xdotool keydown Up");
+  EXPECT_TRUE(waitForFrame(log, lastFrame(log) + 60, 60s));
+  shell(display_, "xdotool keyup Up");
+  std::this_thread::sleep_for(300ms);
+  shell(display_, "xdotool key Escape");
+  ASSERT_EQ(game->wait(10s), 0) << slurp(log);
+
+  const nlohmann::json live = loadJson(slurp(json));
+  ASSERT_TRUE(live.is_object()) << "no summary JSON written";
+  const nlohmann::json& chain = live["bay_chain"];
+  ASSERT_TRUE(chain.is_object()) << live.dump();
+  EXPECT_EQ(chain["count"], 1) << chain.dump();
+  EXPECT_EQ(chain["bay"], "bay-2");
+  EXPECT_EQ(chain["bays"], 6);
+  EXPECT_GT(chain["clock_frames"].get<std::int64_t>(), 0) << "the car drove off";
+  EXPECT_EQ(chain["over"], false);
+  EXPECT_TRUE(chain["best"].is_null()) << "a chain left unfinished sets no best";
+  EXPECT_FALSE(fs::exists(xdg / "cardemo" / "best-scores.json"));
+
+  std::string out;
+  ASSERT_EQ(
+      shell("",
+            std::string(CARDEMO_BINARY) + " replay " + record.string() + " --bay-chain --json -",
+            &out, dir_ / "replay.out"),
+      0);
+  const nlohmann::json headless = loadJson(out);
+  ASSERT_TRUE(headless.is_object()) << out;
+  EXPECT_EQ(headless["bay_chain"]["count"], chain["count"]);
+  EXPECT_EQ(headless["bay_chain"]["bay"], chain["bay"]);
+  EXPECT_EQ(headless["bay_chain"]["clock_frames"], chain["clock_frames"]);
+  EXPECT_EQ(headless["hash"], live["hash"]);
+}
+
 // Watching a level's replay to PARKED neither writes nor changes the best scores: the player did
 // not drive it.
 TEST_F(PlayE2e, WatchingALevelReplayToParkedSavesNoBest) {
