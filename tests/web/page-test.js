@@ -7,6 +7,8 @@
 //     gives the page's frame and hash;
 //   - a malformed replay shows the command line's exact `FILE:LINE: ...` in #status, and the
 //     picker still starts a level;
+//   - free drive's bay chain: a watched drive that parks a bay of the lot, then stands, ends with
+//     TIME UP at the native frame and hash of the chain's end;
 //   - a screenshot is written and is not blank (pixel variance).
 // Usage: node page-test.js URL SITE_DIR NATIVE_CARDEMO OUT_DIR
 "use strict";
@@ -201,6 +203,30 @@ async function malformed(browser) {
   }
 }
 
+async function freeDrive(browser) {
+  // The lot with the car in its first free bay: 90 frames standing (the bay parks), a short drive
+  // (the chain's clock starts at frame 90, the last frame standing), then standing past 180 s.
+  const scene = "page-test-lot.json";
+  const name = "page-test-chain.replay";
+  const lot = JSON.parse(fs.readFileSync(path.join(site, "assets/scenes/parking-lot.json"), "utf8"));
+  Object.assign(lot.player, { x: -40, y: 8, heading_deg: 270 });
+  fs.writeFileSync(path.join(site, scene), JSON.stringify(lot));
+  fs.writeFileSync(path.join(site, name), `cardemo-replay 1\nscene ${scene}\n90 .\n60 U\n60 D\n1 .\n21700 .\n`);
+  try {
+    const end = 90 + 180 * 120;
+    const whole = nativeReplay([name, "--bay-chain"]).json;
+    check(whole.bay_chain.count === 1 && whole.bay_chain.over, `natively the chain parks 1 bay, then ends (${JSON.stringify(whole.bay_chain)})`);
+    const want = nativeReplay([cutReplay(name, end), "--scene", scene]).json;
+    const page = await open(browser, `?replay=${name}&speed=max`);
+    check(await waitText(page, "outcome", "TIME UP"), "the page's free drive ends with TIME UP");
+    check(await waitText(page, "status", `frame ${want.frames} hash ${want.hash}`), `at the chain's end: native frame ${want.frames} hash ${want.hash}`);
+    await page.close();
+  } finally {
+    fs.rmSync(path.join(site, name), { force: true });
+    fs.rmSync(path.join(site, scene), { force: true });
+  }
+}
+
 (async () => {
   fs.mkdirSync(out, { recursive: true });
   const browser = await puppeteer.launch({
@@ -210,10 +236,11 @@ async function malformed(browser) {
     args: ["--no-sandbox", "--disable-gpu", "--autoplay-policy=no-user-gesture-required"],
   });
   try {
-    const only = process.env.PAGE_TEST_ONLY || "replays levelOne malformed";
+    const only = process.env.PAGE_TEST_ONLY || "replays levelOne malformed freeDrive";
     if (only.includes("replays")) await replays(browser);
     if (only.includes("levelOne")) await levelOne(browser);
     if (only.includes("malformed")) await malformed(browser);
+    if (only.includes("freeDrive")) await freeDrive(browser);
   } finally {
     await browser.close();
   }
