@@ -9,6 +9,12 @@
 
 namespace cardemo {
 
+std::vector<ParkingBay> goalBays(const Goal& goal) {
+  std::vector<ParkingBay> bays{goal.bay};
+  bays.insert(bays.end(), goal.next_bays.begin(), goal.next_bays.end());
+  return bays;
+}
+
 ParkingCheck checkParking(const Goal& goal, const Eigen::Vector2d& position,
                           const Eigen::Vector2d& direction, double speed) {
   ParkingCheck c;
@@ -54,11 +60,23 @@ std::int64_t holdFrames(const Goal& goal, double hz) {
 
 ParkingChallenge::ParkingChallenge(const Goal& goal, double hz, int start_health)
     : goal_(goal),
+      bays_(goalBays(goal)),
       hz_(hz),
       start_health_(start_health),
       limit_frames_(limitFrames(goal, hz)),
       hold_frames_(holdFrames(goal, hz)),
-      gates_(goal.gates) {}
+      gates_(goal.gates) {
+  bay_frames_.reserve(bays_.size());
+}
+
+std::size_t ParkingChallenge::currentBay() const {
+  return std::min(bay_frames_.size(), bays_.size() - 1);
+}
+
+std::optional<std::int64_t> ParkingChallenge::bayParkedFrame(std::size_t i) const {
+  if (i >= bay_frames_.size()) return std::nullopt;
+  return bay_frames_[i];
+}
 
 void ParkingChallenge::observe(const World& world) {
   if (over()) return;
@@ -85,14 +103,22 @@ void ParkingChallenge::observe(const World& world) {
     hold_start_ = frame_;
   }
   if (hold_start_ && frame_ - *hold_start_ >= hold_frames_) {
-    parked_frame_ = frame_;
-    ParkingScore s;
-    s.frames = clockFrames();
-    s.seconds = seconds();
-    s.damage = start_health_ - world.health();
-    s.stars = starsFor(goal_, s.seconds, s.damage);
-    score_ = s;
-    return;
+    bay_frames_.push_back(frame_);
+    if (bay_frames_.size() < bays_.size()) {
+      // A bay of a chain: the next one is the goal now, its hold still to come.
+      goal_.bay = bays_[bay_frames_.size()];
+      hold_start_.reset();
+      last_ = checkParking(goal_, car.position, car.direction, car.speed);
+    } else {
+      parked_frame_ = frame_;
+      ParkingScore s;
+      s.frames = clockFrames();
+      s.seconds = seconds();
+      s.damage = start_health_ - world.health();
+      s.stars = starsFor(goal_, s.seconds, s.damage);
+      score_ = s;
+      return;
+    }
   }
   if (limit_frames_ && clockFrames() >= *limit_frames_) timed_out_ = true;
 }

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "sim/gate_course.hpp"
 #include "sim/scene.hpp"
@@ -33,7 +35,13 @@ struct ParkingCheck {
   [[nodiscard]] bool parked() const { return position_ok && heading_ok && speed_ok; }
 };
 
-/// Checks a car pose (centre, unit heading direction, signed speed) against a goal.
+/// The most bays a goal may chain after its first (`goal.next_bays`).
+inline constexpr std::size_t kMaxNextBays = 15;
+
+/// The goal's bays in the order they are parked: `bay`, then each of `next_bays`.
+[[nodiscard]] std::vector<ParkingBay> goalBays(const Goal& goal);
+
+/// Checks a car pose (centre, unit heading direction, signed speed) against a goal's `bay`.
 [[nodiscard]] ParkingCheck checkParking(const Goal& goal, const Eigen::Vector2d& position,
                                         const Eigen::Vector2d& direction, double speed);
 
@@ -65,6 +73,11 @@ inline constexpr int kMaxStars = 3;
 ///
 /// The goal's gates must all be passed, in order, before the parked checks count (GateCourse).
 ///
+/// A goal with `next_bays` is a chain: the car parks in each bay in turn (the checks and the hold
+/// of one bay, against that bay), and is parked when it parks in the last. Each bay's hold starts
+/// after the previous bay is parked; the gates come before the first bay; the clock, the time
+/// limit and the score run over the whole chain.
+///
 /// The level clock starts when the car first moves: at the last frame the car stood at the
 /// position of the first frame observed, so a player reading the task loses no time, and a car
 /// driven from frame 0 has the clock started at frame 0. The time limit counts from there too.
@@ -74,10 +87,11 @@ class ParkingChallenge {
   ParkingChallenge(const Goal& goal, double hz, int start_health);
 
   /// Looks at the world's current frame. Does nothing once the challenge is over. The car is
-  /// parked at the frame where the checks have held on every frame since holdFrames() earlier.
+  /// parked in the current bay at the frame where the checks have held on every frame since
+  /// holdFrames() earlier; parked in the last bay, the challenge is won.
   void observe(const World& world);
 
-  /// Frame at which the car was parked (the checks held for the goal's hold time).
+  /// Frame at which the car was parked in the last bay (the checks held for the hold time).
   [[nodiscard]] std::optional<std::int64_t> parkedFrame() const { return parked_frame_; }
   /// The score, once parked.
   [[nodiscard]] std::optional<ParkingScore> score() const { return score_; }
@@ -101,10 +115,18 @@ class ParkingChallenge {
   [[nodiscard]] double heldSeconds() const;
   /// The goal's hold time rounded up to whole frames, s (what heldSeconds() must reach).
   [[nodiscard]] double holdSeconds() const;
-  /// The last check made (for the HUD).
+  /// The last check made (for the HUD), against the current bay.
   [[nodiscard]] const ParkingCheck& lastCheck() const { return last_; }
-  /// The goal.
+  /// The goal, with `bay` the current bay: the bay to park in now (the last one once parked).
   [[nodiscard]] const Goal& goal() const { return goal_; }
+  /// Every bay of the goal in order (goalBays()).
+  [[nodiscard]] std::span<const ParkingBay> bays() const { return bays_; }
+  /// Bays parked so far; bays().size() once the challenge is won.
+  [[nodiscard]] std::size_t baysParked() const { return bay_frames_.size(); }
+  /// Index in bays() of the current bay (the last one once all are parked).
+  [[nodiscard]] std::size_t currentBay() const;
+  /// Frame at which bay `i` was parked, if it is.
+  [[nodiscard]] std::optional<std::int64_t> bayParkedFrame(std::size_t i) const;
   /// Steps per second.
   [[nodiscard]] double hz() const { return hz_; }
   /// The goal's gates and which of them are passed.
@@ -112,6 +134,8 @@ class ParkingChallenge {
 
  private:
   Goal goal_;
+  std::vector<ParkingBay> bays_;
+  std::vector<std::int64_t> bay_frames_;  // per parked bay, in order
   double hz_;
   int start_health_;
   std::optional<std::int64_t> limit_frames_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace cardemo {
 namespace {
@@ -102,6 +103,12 @@ std::string nextGateText(const GateCourse& gates) {
   return "next gate " + std::to_string(gates.passed() + 1) + ": " + next->name;
 }
 
+std::string nextBayText(const ParkingChallenge& challenge) {
+  if (challenge.bays().size() < 2 || challenge.parkedFrame()) return {};
+  return "next bay " + std::to_string(challenge.currentBay() + 1) + "/" +
+         std::to_string(challenge.bays().size());
+}
+
 std::string gateNoticeText(const GateCourse& gates, const GateNotice& notice) {
   const std::string number = std::to_string(notice.gate + 1);
   const std::string name =
@@ -132,6 +139,7 @@ std::vector<std::string> notParkedReasons(const ParkingChallenge& challenge) {
   if (challenge.wrecked()) reasons.emplace_back("wrecked");
   if (challenge.timedOut()) reasons.emplace_back("time up");
   if (!challenge.gates().done()) reasons.push_back(nextGateText(challenge.gates()));
+  if (std::string bay = nextBayText(challenge); !bay.empty()) reasons.push_back(std::move(bay));
   const std::vector<std::string> off =
       fixTexts(parkingFixes(challenge.goal(), challenge.lastCheck()));
   reasons.insert(reasons.end(), off.begin(), off.end());

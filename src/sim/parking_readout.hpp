@@ -61,6 +61,10 @@ struct ParkingFix {
 /// "next gate 2: NAME" for the challenge's next gate, or empty when every gate is passed.
 [[nodiscard]] std::string nextGateText(const GateCourse& gates);
 
+/// "next bay 2/3" for a chain of bays (the goal has `next_bays`) not yet all parked: the current
+/// bay and how many there are; empty for a goal of one bay.
+[[nodiscard]] std::string nextBayText(const ParkingChallenge& challenge);
+
 /// The words of a gate notice: "gate 1 passed: NAME", "missed gate 2: NAME" (the gate skipped),
 /// "gate 2 the wrong way: NAME".
 [[nodiscard]] std::string gateNoticeText(const GateCourse& gates, const GateNotice& notice);
@@ -71,7 +75,8 @@ struct ParkingFix {
 [[nodiscard]] std::vector<std::string> bayReadout(const ParkingChallenge& challenge);
 
 /// Why the challenge's car is not parked (yet), for `replay --json` and the end panels: "wrecked"
-/// or "time up" when that ended the run, nextGateText() while a gate is still to pass, then what
+/// or "time up" when that ended the run, nextGateText() while a gate is still to pass,
+/// nextBayText() in a chain of bays, then what
 /// its last frame lacks: the fixes' words ("12.3 m to the bay" when far), or "hold 0.2 / 0.5 s"
 /// while every check holds. Empty once parked.
 [[nodiscard]] std::vector<std::string> notParkedReasons(const ParkingChallenge& challenge);

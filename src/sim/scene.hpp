@@ -78,6 +78,8 @@ struct Goal {
   std::optional<double> par_time;    ///< Time for three stars, s.
   std::optional<double> time_limit;  ///< The run ends unparked after this long, s.
   std::vector<Gate> gates;           ///< Checkpoints to pass in order before the bay counts.
+  /// More bays to park in, in order, after `bay` (a chain of bays; empty: `bay` alone).
+  std::vector<ParkingBay> next_bays;
 };
 
 /// Marks a scene as a level of the scene picker (`level` in the scene file).

@@ -389,6 +389,138 @@ TEST(ParkingChallenge, RollingThroughTheBayTooFastIsNotParked) {
   EXPECT_FALSE(challenge.parkedFrame().has_value());
 }
 
+// A chain of two bays on the x axis, A 4 m and B 12 m ahead of a car at rest at the origin.
+Scene chainScene() {
+  Scene s = driveInScene();
+  ParkingBay b = s.goal->bay;
+  b.center = {12.0, 0.0};
+  s.goal->next_bays = {b};
+  return s;
+}
+
+// Drives at up to 3 m/s and brakes 0.5 m before `x` (where it stops).
+InputFrame driveTo(const World& world, double x) {
+  InputFrame in;
+  const bool short_of = world.car().position.x() < x - 0.5;
+  in.up = short_of && world.car().speed < 3.0;
+  in.down = !short_of && world.car().speed > 0.0;
+  return in;
+}
+
+// Drives to bay A, stops there until it counts, then drives on to bay B and stops.
+InputFrame driveChain(const World& world, const ParkingChallenge& challenge) {
+  return driveTo(world, challenge.baysParked() == 0 ? 4.0 : 12.0);
+}
+
+TEST(ParkingChallenge, AChainParksEachBayInTurnAfterItsOwnHold) {
+  const Scene scene = chainScene();
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, world.settings().hz, scene.player.health);
+  ASSERT_EQ(challenge.bays().size(), 2u);
+  EXPECT_EQ(challenge.bays()[1].center, Eigen::Vector2d(12.0, 0.0));
+  const std::int64_t hold = holdFrames(*scene.goal, world.settings().hz);
+  // An independent count of the rule: the checks against the bay of the moment, held unbroken
+  // for the hold; the second bay's run can start only after the first bay counted.
+  std::size_t bay = 0;
+  std::int64_t run_start = -1;
+  std::vector<std::int64_t> expected;
+  const auto count = [&] {
+    Goal g = *scene.goal;
+    g.bay = bay == 0 ? scene.goal->bay : scene.goal->next_bays[0];
+    const ParkingCheck c =
+        checkParking(g, world.car().position, world.car().direction, world.car().speed);
+    if (!c.parked()) {
+      run_start = -1;
+    } else if (run_start < 0) {
+      run_start = world.frame();
+    }
+    if (run_start >= 0 && world.frame() - run_start >= hold) {
+      expected.push_back(world.frame());
+      ++bay;
+      run_start = -1;
+    }
+  };
+  count();
+  challenge.observe(world);
+  for (int i = 0; i < 4800 && !challenge.over(); ++i) {
+    world.step(driveChain(world, challenge));
+    if (bay < 2) count();
+    challenge.observe(world);
+    EXPECT_EQ(challenge.baysParked(), expected.size()) << "frame " << world.frame();
+    if (challenge.baysParked() == 1 && !challenge.over()) {
+      EXPECT_EQ(challenge.currentBay(), 1u);
+      EXPECT_EQ(challenge.goal().bay.center, Eigen::Vector2d(12.0, 0.0));
+    }
+  }
+  ASSERT_EQ(expected.size(), 2u) << "the script never parks in both bays";
+  EXPECT_EQ(challenge.bayParkedFrame(0), expected[0]);
+  EXPECT_EQ(challenge.bayParkedFrame(1), expected[1]);
+  EXPECT_FALSE(challenge.bayParkedFrame(2).has_value());
+  EXPECT_EQ(challenge.parkedFrame(), expected[1]);
+  EXPECT_GT(expected[1] - expected[0], hold) << "the second hold starts after the first bay";
+  ASSERT_TRUE(challenge.score().has_value());
+  EXPECT_EQ(challenge.score()->frames, expected[1] - challenge.clockStart().value_or(0));
+  EXPECT_EQ(challenge.currentBay(), 1u);  // the last bay stays current once parked
+}
+
+TEST(ParkingChallenge, AChainsLaterBayDoesNotCountBeforeItsTurn) {
+  // Straight past bay A and into bay B: B is not the bay yet, so nothing counts.
+  const Scene scene = chainScene();
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  challenge.observe(world);
+  int in_b = 0;
+  for (int i = 0; i < 2400 && !challenge.over(); ++i) {
+    world.step(driveTo(world, 12.0));
+    challenge.observe(world);
+    Goal b = *scene.goal;
+    b.bay = scene.goal->next_bays[0];
+    in_b += checkParking(b, world.car().position, world.car().direction, world.car().speed).parked()
+                ? 1
+                : 0;
+  }
+  EXPECT_GT(in_b, 600) << "the car never stood in bay B: the test shows nothing";
+  EXPECT_FALSE(challenge.over());
+  EXPECT_EQ(challenge.baysParked(), 0u);
+  EXPECT_EQ(challenge.currentBay(), 0u);
+  EXPECT_FALSE(challenge.lastCheck().position_ok);  // judged against bay A, 8 m back
+}
+
+TEST(ParkingChallenge, AChainRunsOutOfTimeBetweenBays) {
+  Scene scene = chainScene();
+  scene.goal->time_limit = 4.0;
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  challenge.observe(world);
+  // Park in bay A, then wait there until the time is up.
+  while (!challenge.over()) {
+    world.step(challenge.baysParked() == 0 ? driveIn(world) : InputFrame{});
+    challenge.observe(world);
+  }
+  EXPECT_TRUE(challenge.timedOut());
+  EXPECT_EQ(challenge.baysParked(), 1u);
+  EXPECT_FALSE(challenge.parkedFrame().has_value());
+  EXPECT_FALSE(challenge.score().has_value());
+}
+
+TEST(ParkingChallenge, OneBayIsAChainOfOne) {
+  const Scene scene = driveInScene();
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, 120.0, 100);
+  ASSERT_EQ(challenge.bays().size(), 1u);
+  EXPECT_EQ(challenge.bays()[0].center, scene.goal->bay.center);
+  challenge.observe(world);
+  while (!challenge.over() && world.frame() < 2400) {
+    world.step(driveIn(world));
+    challenge.observe(world);
+  }
+  ASSERT_TRUE(challenge.parkedFrame().has_value());
+  EXPECT_EQ(challenge.baysParked(), 1u);
+  EXPECT_EQ(challenge.bayParkedFrame(0), challenge.parkedFrame());
+  EXPECT_EQ(challenge.currentBay(), 0u);
+  EXPECT_EQ(goalBays(*scene.goal).size(), 1u);
+}
+
 TEST(ParkingChallenge, ObservingDoesNotChangeTheWorldHash) {
   const Scene scene = driveInScene();
   World watched(scene);

@@ -226,5 +226,45 @@ TEST(ParkingReadout, NotParkedReasonsFollowTheRun) {
   EXPECT_EQ(bayReadout(e), Words{});
 }
 
+// A chain of two bays says which bay is next until the last is parked.
+TEST(ParkingReadout, AChainNamesTheNextBay) {
+  Scene scene = test::sceneWith({});
+  Goal g;
+  g.bay.center = {0.0, 0.0};
+  ParkingBay second = g.bay;
+  second.center = {30.0, 0.0};
+  g.next_bays = {second};
+  g.time_limit = 2.0;
+  scene.goal = g;
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  EXPECT_EQ(nextBayText(c), "next bay 1/2");
+  EXPECT_EQ(notParkedReasons(c), (Words{"next bay 1/2", "hold 0.0 / 0.5 s"}));
+  while (c.baysParked() == 0) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_EQ(nextBayText(c), "next bay 2/2");
+  EXPECT_EQ(notParkedReasons(c), (Words{"next bay 2/2", "30.0 m to the bay"}));
+  while (!c.over()) {
+    world.step(InputFrame{true, false, false, false});
+    c.observe(world);
+  }
+  ASSERT_TRUE(c.timedOut());
+  const Words reasons = notParkedReasons(c);
+  ASSERT_GE(reasons.size(), 3u);
+  EXPECT_EQ(reasons[0], "time up");
+  EXPECT_EQ(reasons[1], "next bay 2/2");
+
+  // One bay: no bay number anywhere.
+  scene.goal->next_bays.clear();
+  const World one(scene);
+  ParkingChallenge d(*scene.goal, 120.0, 100);
+  d.observe(one);
+  EXPECT_EQ(nextBayText(d), "");
+  EXPECT_EQ(notParkedReasons(d), Words{"hold 0.0 / 0.5 s"});
+}
+
 }  // namespace
 }  // namespace cardemo
