@@ -24,6 +24,7 @@
 #include "io/scene_json.hpp"
 #include "io/scene_rules.hpp"
 #include "sim/gate_course.hpp"
+#include "sim/parking_goal.hpp"
 
 namespace cardemo {
 namespace {
@@ -60,15 +61,16 @@ constexpr Keys<5> kPoseKeys = {"x", "y", "heading_deg", "length", "width"};
 enum PoseKey { kXKey, kYKey, kHeadingKey, kLengthKey, kWidthKey };
 constexpr Keys<2> kBoundsKeys = {"min", "max"};
 constexpr Keys<2> kObstacleKeys = {"id", "points"};
-constexpr Keys<9> kGoalKeys = {"bay",
-                               "position_tolerance",
-                               "heading_tolerance_deg",
-                               "either_direction",
-                               "max_speed",
-                               "hold_time",
-                               "par_time",
-                               "time_limit",
-                               "gates"};
+constexpr Keys<10> kGoalKeys = {"bay",
+                                "position_tolerance",
+                                "heading_tolerance_deg",
+                                "either_direction",
+                                "max_speed",
+                                "hold_time",
+                                "par_time",
+                                "time_limit",
+                                "gates",
+                                "next_bays"};
 enum GoalKey {
   kBayKey,
   kPositionToleranceKey,
@@ -78,7 +80,8 @@ enum GoalKey {
   kHoldTimeKey,
   kParTimeKey,
   kTimeLimitKey,
-  kGatesKey
+  kGatesKey,
+  kNextBaysKey
 };
 constexpr Keys<4> kGateKeys = {"name", "line", "box", "direction_deg"};
 enum GateKey { kGateNameKey, kGateLineKey, kGateBoxKey, kGateDirectionKey };
@@ -476,6 +479,8 @@ class FastSceneReader {
               return true;
             case kGatesKey:
               return readGates(f, goal.gates);
+            case kNextBaysKey:
+              return readNextBays(f, goal.next_bays);
             default:
               if (!positive(f, kMaxGoalTime, x)) return false;
               goal.time_limit = x;
@@ -542,6 +547,19 @@ class FastSceneReader {
       }
       if (direction_deg && setGateDirection(gate, *direction_deg) != nullptr) return false;
       gates.push_back(std::move(gate));
+      return true;
+    });
+  }
+
+  bool readNextBays(od::value& v, std::vector<ParkingBay>& bays) {
+    const auto reserve = [&bays](std::size_t count) {
+      bays.reserve(count);
+      return count <= kMaxNextBays;
+    };
+    return readArray(v, reserve, [&](od::value& item) {
+      Pose pose;
+      if (!readPose(item, pose)) return false;
+      bays.push_back(ParkingBay{pose.center, pose.heading_deg, pose.length, pose.width});
       return true;
     });
   }

@@ -12,6 +12,7 @@
 #include "io/scene_json.hpp"
 #include "io/scene_rules.hpp"
 #include "sim/gate_course.hpp"
+#include "sim/parking_goal.hpp"
 
 namespace cardemo {
 namespace {
@@ -304,7 +305,7 @@ class SceneReader {
     if (!isKind(n, Kind::kObject, path) ||
         !onlyKeys(n,
                   {"bay", "position_tolerance", "heading_tolerance_deg", "either_direction",
-                   "max_speed", "hold_time", "par_time", "time_limit", "gates"},
+                   "max_speed", "hold_time", "par_time", "time_limit", "gates", "next_bays"},
                   path)) {
       return false;
     }
@@ -349,6 +350,30 @@ class SceneReader {
     }
     if (const Node* gates = n.find("gates")) {
       if (!readGates(*gates, goal.gates)) return false;
+    }
+    if (const Node* bays = n.find("next_bays")) {
+      if (!readNextBays(*bays, goal.next_bays)) return false;
+    }
+    return true;
+  }
+
+  bool readNextBays(const Node& n, std::vector<ParkingBay>& bays) {
+    if (!isKind(n, Kind::kArray, "goal.next_bays")) return false;
+    if (n.items.size() > kMaxNextBays) {
+      return fail(n.line, "goal.next_bays: at most " + std::to_string(kMaxNextBays) +
+                              " bays, found " + std::to_string(n.items.size()));
+    }
+    bays.reserve(n.items.size());
+    for (std::size_t i = 0; i < n.items.size(); ++i) {
+      const Node& item = n.items[i];
+      const std::string path = "goal.next_bays[" + std::to_string(i) + "]";
+      ParkingBay bay;
+      if (!isKind(item, Kind::kObject, path) ||
+          !onlyKeys(item, {"x", "y", "heading_deg", "length", "width"}, path) ||
+          !readPose(item, path, bay.center, bay.heading_deg, bay.length, bay.width)) {
+        return false;
+      }
+      bays.push_back(bay);
     }
     return true;
   }

@@ -350,6 +350,34 @@ TEST(SceneJsonFast, KeysDuplicatesAndUnknownsAreJudgedAlike) {
   }
 }
 
+TEST(SceneJsonFast, NextBaysAreJudgedAlike) {
+  const std::string_view at = R"("either_direction": true)";
+  const std::string bay = R"({"x": 1, "y": 2, "heading_deg": 0, "length": 5, "width": 2})";
+  std::string fifteen = bay;
+  for (int i = 1; i < 15; ++i) fifteen += ", " + bay;
+  for (const std::string& bays : std::vector<std::string>{
+           "[]",
+           "[" + bay + "]",
+           "[" + fifteen + "]",
+           "[" + fifteen + ", " + bay + "]",
+           "{}",
+           "[1]",
+           "[[]]",
+           "null",
+           R"([{"x": 1, "y": 2, "heading_deg": 0, "length": 5}])",
+           R"([{"x": 1, "y": 2, "heading_deg": 0, "length": 5, "width": 0}])",
+           R"([{"x": 1, "y": 2, "heading_deg": 0, "length": 5, "width": 2, "id": "B"}])",
+           R"([{"x": 1, "y": 2, "heading_deg": 0, "length": 5, "width": 2, "x": 1}])",
+           R"([{"x": 1e10, "y": 2, "heading_deg": 0, "length": 5, "width": 2}])",
+       }) {
+    EXPECT_TRUE(readersAgree(baseWith(at, std::string(at) + R"(, "next_bays": )" + bays))) << bays;
+  }
+  bool accepted = false;
+  EXPECT_TRUE(
+      readersAgree(baseWith(at, std::string(at) + R"(, "next_bays": [)" + bay + "]"), &accepted));
+  EXPECT_TRUE(accepted);
+}
+
 TEST(SceneJsonFast, DocumentLevelOddsAreJudgedAlike) {
   const std::string base(kBase);
   for (const std::string& text :
@@ -575,7 +603,16 @@ class RandomSceneText {
     if (coin()) members.push_back(member("par_time", number(uniform(5, 50))));
     if (coin()) members.push_back(member("time_limit", number(uniform(50, 500))));
     if (coin()) members.push_back(member("gates", gates()));
+    if (coin()) members.push_back(member("next_bays", nextBays()));
     return object(std::move(members));
+  }
+
+  // Up to 16 bays: one more than a goal may chain, which both refuse.
+  std::string nextBays() {
+    std::vector<std::string> items;
+    const std::size_t n = rng_() % 8 == 0 ? 16 : rng_() % 4;
+    for (std::size_t i = 0; i < n; ++i) items.push_back(object(poseMembers()));
+    return array(items);
   }
 
   // Lines and boxes, some with a direction (a line's may run too close to it: both refuse that).

@@ -41,11 +41,14 @@ class SceneBits {
     same(a.min, b.min, field + ".min");
     same(a.max, b.max, field + ".max");
   }
+  void same(const ParkingBay& a, const ParkingBay& b, const std::string& field) {
+    same(a.center, b.center, field + ".center");
+    same(a.heading_deg, b.heading_deg, field + ".heading_deg");
+    same(a.length, b.length, field + ".length");
+    same(a.width, b.width, field + ".width");
+  }
   void same(const Goal& a, const Goal& b, const std::string& field) {
-    same(a.bay.center, b.bay.center, field + ".bay.center");
-    same(a.bay.heading_deg, b.bay.heading_deg, field + ".bay.heading_deg");
-    same(a.bay.length, b.bay.length, field + ".bay.length");
-    same(a.bay.width, b.bay.width, field + ".bay.width");
+    same(a.bay, b.bay, field + ".bay");
     same(a.position_tolerance, b.position_tolerance, field + ".position_tolerance");
     same(a.heading_tolerance_deg, b.heading_tolerance_deg, field + ".heading_tolerance_deg");
     note(a.either_direction == b.either_direction, field + ".either_direction");
@@ -56,6 +59,10 @@ class SceneBits {
     note(a.gates.size() == b.gates.size(), field + ".gates count");
     for (std::size_t i = 0; i < a.gates.size() && i < b.gates.size(); ++i) {
       same(a.gates[i], b.gates[i], field + ".gates[" + std::to_string(i) + "]");
+    }
+    note(a.next_bays.size() == b.next_bays.size(), field + ".next_bays count");
+    for (std::size_t i = 0; i < a.next_bays.size() && i < b.next_bays.size(); ++i) {
+      same(a.next_bays[i], b.next_bays[i], field + ".next_bays[" + std::to_string(i) + "]");
     }
   }
   void same(const Gate& a, const Gate& b, const std::string& field) {
