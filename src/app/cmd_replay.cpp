@@ -95,9 +95,20 @@ std::string gatesText(const GateCourse& gates) {
   return out + "\n";
 }
 
+// "bays      1 of 2 parked (frame 812)" for a chain of bays; nothing for one bay.
+std::string baysText(const ParkingChallenge& challenge) {
+  if (challenge.bays().size() < 2) return "";
+  std::string out = "bays      " + std::to_string(challenge.baysParked()) + " of " +
+                    std::to_string(challenge.bays().size()) + " parked";
+  for (std::size_t i = 0; i < challenge.baysParked(); ++i) {
+    out += (i == 0 ? " (frame " : ", ") + std::to_string(*challenge.bayParkedFrame(i));
+  }
+  return out + (challenge.baysParked() > 0 ? ")\n" : "\n");
+}
+
 std::string goalText(const ParkingChallenge* challenge) {
   if (challenge == nullptr) return "";
-  const std::string gates = gatesText(challenge->gates());
+  const std::string gates = gatesText(challenge->gates()) + baysText(*challenge);
   const std::optional<std::int64_t> start = challenge->clockStart();
   if (const std::optional<ParkingScore> score = challenge->score()) {
     // The clock runs from the car's first move (frame 0 when it never moved).

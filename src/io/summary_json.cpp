@@ -44,6 +44,15 @@ nlohmann::json gatesJson(const GateCourse& course) {
           {"misses", course.misses()}};
 }
 
+nlohmann::json baysJson(const ParkingChallenge& challenge) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (std::size_t i = 0; i < challenge.baysParked(); ++i) {
+    frames.push_back(*challenge.bayParkedFrame(i));
+  }
+  return {
+      {"total", challenge.bays().size()}, {"parked", challenge.baysParked()}, {"frames", frames}};
+}
+
 nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge) {
   nlohmann::json hits = nlohmann::json::array();
   for (const HitEvent& h : world.hits()) {
@@ -60,8 +69,10 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
   nlohmann::json clock_start = nullptr;
   nlohmann::json not_parked = nullptr;
   nlohmann::json gates = nullptr;
+  nlohmann::json bays = nullptr;
   if (challenge != nullptr) {
     gates = gatesJson(challenge->gates());
+    bays = baysJson(*challenge);
     if (challenge->parkedFrame()) {
       parked = *challenge->parkedFrame();
       score = scoreJson(*challenge->score());
@@ -103,6 +114,7 @@ nlohmann::json summaryJson(const World& world, const ParkingChallenge* challenge
       {"clock_start", clock_start},
       {"not_parked", not_parked},
       {"gates", gates},
+      {"bays", bays},
   };
 }
 

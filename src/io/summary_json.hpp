@@ -11,8 +11,8 @@ namespace cardemo {
 
 /// Builds the summary JSON of a world after a run: scene, hz, frames, health, hits, final, hash,
 /// stats, and the parking challenge's `parked` (frame or null), `score` (null unless parked),
-/// `clock_start` (the level clock's first frame, or null), `not_parked` (why not, or []) and
-/// `gates` (gatesJson, or null without a goal).
+/// `clock_start` (the level clock's first frame, or null), `not_parked` (why not, or []),
+/// `gates` (gatesJson) and `bays` (baysJson), both null without a goal.
 [[nodiscard]] nlohmann::json summaryJson(const World& world,
                                          const ParkingChallenge* challenge = nullptr);
 
@@ -23,6 +23,10 @@ namespace cardemo {
 /// A goal's gates as JSON: total, passed (count), names (of the gates passed, in order), next
 /// (the next gate's name, or null) and misses (steps that passed a later gate first).
 [[nodiscard]] nlohmann::json gatesJson(const GateCourse& course);
+
+/// A goal's bays as JSON: total (1, or more in a chain), parked (how many so far) and frames (the
+/// frame each of those was parked at, in order).
+[[nodiscard]] nlohmann::json baysJson(const ParkingChallenge& challenge);
 
 /// The score as JSON: frames, seconds, damage, stars.
 [[nodiscard]] nlohmann::json scoreJson(const ParkingScore& score);

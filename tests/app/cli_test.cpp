@@ -293,6 +293,36 @@ TEST(Cli, ReplayBayChainCountsTheBaysParked) {
   EXPECT_FALSE(nlohmann::json::parse(plain.out, nullptr, false).contains("bay_chain"));
 }
 
+// `replay --json` reports a chain of bays: a car standing in the first of two parks it after the
+// hold, and the second is next; a goal of one bay has one.
+TEST(Cli, ReplayJsonReportsTheBaysOfAChain) {
+  const auto scene = writeTemp("chain.json", R"({"format": "cardemo-scene/1", "name": "chain",
+    "player": {"x": 0, "y": 0, "heading_deg": 0, "length": 4.5, "width": 1.8},
+    "parked": [],
+    "goal": {"bay": {"x": 0, "y": 0, "heading_deg": 0, "length": 5.5, "width": 2.6},
+             "next_bays": [{"x": 20, "y": 0, "heading_deg": 0, "length": 5.5, "width": 2.6}]}})");
+  const auto replay =
+      writeTemp("chain.replay", "cardemo-replay 1\nscene " + scene.string() + "\n90 .\n");
+  const CliResult r = cardemo("replay " + replay.string() + " --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(j.is_object()) << r.out;
+  EXPECT_EQ(j["bays"]["total"], 2) << j.dump();
+  EXPECT_EQ(j["bays"]["parked"], 1) << j.dump();
+  EXPECT_EQ(j["bays"]["frames"], nlohmann::json::array({60})) << j.dump();
+  EXPECT_TRUE(j["parked"].is_null());
+  ASSERT_FALSE(j["not_parked"].empty());
+  EXPECT_EQ(j["not_parked"][0], "next bay 2/2");
+  EXPECT_NE(r.err.find("bays      1 of 2 parked (frame 60)"), std::string::npos) << r.err;
+
+  const nlohmann::json one = nlohmann::json::parse(
+      cardemo("replay " + asset("replays/level-1-straight.replay") + " --json -").out, nullptr,
+      false);
+  EXPECT_EQ(one["bays"]["total"], 1);
+  EXPECT_EQ(one["bays"]["parked"], 1);
+  EXPECT_EQ(one["bays"]["frames"], nlohmann::json::array({one["parked"]}));
+}
+
 // `replay --json` reports the gates: the slalom's golden weave passes all three, in order; a
 // straight drive misses the first, and not_parked names it.
 TEST(Cli, ReplayJsonReportsTheGates) {
@@ -326,6 +356,7 @@ TEST(Cli, ReplayJsonReportsTheGates) {
   const auto lot = writeTemp(
       "lot.replay", "cardemo-replay 1\nscene " + asset("scenes/parking-lot.json") + "\n10 U\n");
   EXPECT_TRUE(json_of(lot.string())["gates"].is_null());
+  EXPECT_TRUE(json_of(lot.string())["bays"].is_null());
 }
 
 }  // namespace
