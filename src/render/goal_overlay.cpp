@@ -217,6 +217,10 @@ std::string timerDetail(const ParkingChallenge& challenge) {
             ? std::string("gates done")
             : "gate " + std::to_string(gates.passed() + 1) + "/" + std::to_string(gates.size()));
   }
+  if (challenge.bays().size() > 1) {
+    add("bay " + std::to_string(challenge.currentBay() + 1) + "/" +
+        std::to_string(challenge.bays().size()));
+  }
   if (goal.time_limit) {
     add("left " + secondsText(std::max(0.0, *goal.time_limit - challenge.seconds())));
   }

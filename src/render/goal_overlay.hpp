@@ -89,8 +89,9 @@ struct GoalTask {
                                                         const Eigen::Vector2f& target,
                                                         float margin);
 
-/// The line under the timer: par, time left and distance to the bay while driving; the hold
-/// while the car is in the bay; then what ended the run.
+/// The line under the timer: par, the gate and the bay of a chain to take next ("gate 2/3", "bay
+/// 1/2"), time left and distance to the bay while driving; the hold while the car is in the bay;
+/// then what ended the run.
 [[nodiscard]] std::string timerDetail(const ParkingChallenge& challenge);
 
 /// The lowest the timer panel reaches in a viewport (with its readout row), pixels: the HUD's

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <string>
 
 #include "render/shapes.hpp"
 #include "render/world_layer.hpp"
@@ -171,11 +172,18 @@ void drawMarkings(Canvas& canvas, const Camera& camera, const Scene& scene,
             static_cast<float>(std::min(1.2, 0.45 * len) * ppm), palette.paint);
     }
   }
-  if (scene.goal) drawGoalPaint(canvas, camera, scene.goal->bay, palette);
+  if (!scene.goal) return;
+  // Every bay of the goal; in a chain each is numbered in its order instead of a "P".
+  const Goal& goal = *scene.goal;
+  const std::size_t count = 1 + goal.next_bays.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const ParkingBay& bay = i == 0 ? goal.bay : goal.next_bays[i - 1];
+    drawGoalPaint(canvas, camera, bay, palette, count > 1 ? std::to_string(i + 1) : "P");
+  }
 }
 
 void drawGoalPaint(Canvas& canvas, const Camera& camera, const ParkingBay& bay,
-                   const Palette& palette) {
+                   const Palette& palette, const std::string& mark) {
   const double ppm = camera.pixels_per_metre;
   const Obb2 box = Obb2::fromDegrees(bay.center, bay.heading_deg, bay.length, bay.width);
   if (!box.aabb().overlaps(visibleWorld(camera))) return;
@@ -184,11 +192,11 @@ void drawGoalPaint(Canvas& canvas, const Camera& camera, const ParkingBay& bay,
   fill.a = 45;
   canvas.fillConvex(corners, fill);
   outline(canvas, corners, std::max(2.0f, static_cast<float>(0.15 * ppm)), palette.goal_bay);
-  // A "P" painted in the bay, facing the way the car should park.
+  // A "P" (or the bay's number in a chain) painted in the bay.
   const int px = static_cast<int>(std::lround(std::min(bay.length, bay.width) * 0.55 * ppm));
   if (px >= 8) {
-    const Eigen::Vector2f size = canvas.textSize("P", px);
-    canvas.text(camera.toScreen(bay.center) - 0.5f * size, "P", px, palette.goal_bay);
+    const Eigen::Vector2f size = canvas.textSize(mark, px);
+    canvas.text(camera.toScreen(bay.center) - 0.5f * size, mark, px, palette.goal_bay);
   }
 }
 

@@ -2,6 +2,8 @@
 /// The ground under the cars: asphalt (sprite tiles or vector patches), painted parking-bay lines,
 /// the walls with their kerb blocks.
 
+#include <string>
+
 #include "render/camera.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
@@ -20,13 +22,13 @@ void drawGround(Canvas& canvas, const Camera& camera, const Scene& scene, const 
 void drawBayLines(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette);
 
 /// The scene's painted lines and lane arrows, and its goal bay (a tinted box with a bright frame
-/// and a P in the middle).
+/// and a P in the middle; a chain's bays each with its number instead).
 void drawMarkings(Canvas& canvas, const Camera& camera, const Scene& scene, const Palette& palette);
 
-/// A goal bay's paint: a tinted box with a bright frame and a P in the middle (a level's goal, or
-/// the bay chain's highlighted bay).
+/// A goal bay's paint: a tinted box with a bright frame and `mark` in the middle (a level's goal,
+/// "P" or its number in a chain of bays, or the bay chain's highlighted bay).
 void drawGoalPaint(Canvas& canvas, const Camera& camera, const ParkingBay& bay,
-                   const Palette& palette);
+                   const Palette& palette, const std::string& mark = "P");
 
 /// The four walls outside `bounds`, with alternating kerb blocks along their inner edge.
 void drawWalls(Canvas& canvas, const Camera& camera, const Aabb2& bounds, const Palette& palette);

@@ -10,6 +10,7 @@
 #include "../sim/scene_builders.hpp"
 #include "recording_canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/ground_layer.hpp"
 #include "render/hud.hpp"
 #include "render/shapes.hpp"
 
@@ -212,6 +213,41 @@ TEST(GoalOverlay, TimerDetailFollowsTheRunAndThePanelListsTheKeys) {
   ParkingChallenge d(*far.goal, 120.0, 100);
   d.observe(away);
   EXPECT_EQ(timerDetail(d), "par 12.0 s   left 60.0 s   bay 10.0 m");
+}
+
+// A chain of two bays: the timer line says which bay is next, the outline moves to the second
+// bay once the first is parked, and the ground shows both, numbered.
+TEST(GoalOverlay, AChainShowsWhichBayIsNext) {
+  Scene scene = bayScene(0.0);
+  ParkingBay second = scene.goal->bay;
+  second.center = {12.0, 0.0};
+  scene.goal->next_bays = {second};
+  World world(scene);
+  ParkingChallenge c(*scene.goal, 120.0, 100);
+  c.observe(world);
+  EXPECT_EQ(timerDetail(c), "par 12.0 s   bay 1/2   left 60.0 s   hold 0.0 / 0.5 s");
+  while (c.baysParked() == 0) {
+    world.step(InputFrame{});
+    c.observe(world);
+  }
+  EXPECT_EQ(timerDetail(c), "par 12.0 s   bay 2/2   left 60.0 s   bay 12.0 m");
+  // The bay outlined is the second: its centre is where the outline's corners average.
+  RecordingCanvas outlined;
+  GoalView view;
+  view.challenge = &c;
+  const Camera camera = followCamera(world.carBox(), 12.0, {1280, 720});
+  drawGoalBay(outlined, camera, view);
+  ASSERT_FALSE(outlined.lines.empty());
+  Eigen::Vector2f sum = Eigen::Vector2f::Zero();
+  for (const RecordingCanvas::Line& l : outlined.lines) sum += l.a + l.b;
+  const Eigen::Vector2f centre = sum / (2.0f * static_cast<float>(outlined.lines.size()));
+  EXPECT_LT((centre - camera.toScreen(second.center)).norm(), 1.0f);
+  // Both bays are painted on the ground, numbered 1 and 2 (no "P").
+  RecordingCanvas ground;
+  drawMarkings(ground, camera, scene, Palette{});
+  EXPECT_TRUE(ground.hasText("1"));
+  EXPECT_TRUE(ground.hasText("2"));
+  EXPECT_FALSE(ground.hasText("P"));
 }
 
 // Until the car moves the clock does not run: a player reading the task loses no time.
