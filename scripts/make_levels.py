@@ -30,6 +30,7 @@ TMP = tempfile.mkdtemp(prefix="cardemo-levels-")
 EMPTY = os.path.join(TMP, "empty.json")
 ONLY = []
 MAX_SPEED = 5.5  # m/s (about 20 km/h): parking levels are slow
+PARS = {}  # level number -> par time, s (from the human replays: main() reads them)
 PLAYER_LENGTH, PLAYER_WIDTH = 4.5, 1.8  # m
 
 
@@ -392,6 +393,47 @@ LEVEL9={'file':'level-9-cones','bay':(0.0,0.0),'make':make9,
     'steps':[('U',lambda q:f(q,'x')>14),('UL',lambda q:f(q,'heading_deg')>174),('U',lambda q:abs(f(q,'steer_deg'))<0.01),
              ('U',lambda q:f(q,'x')<2),('D',lambda q:f(q,'speed')<=0),('.',30)]}
 
+def first_stop(rows, hold=61):
+    """Index of the first frame after the car has moved from which it stands for `hold` frames."""
+    moved=False
+    for i in range(1,len(rows)-hold):
+        moved=moved or f(rows[i],'speed')!=0
+        if moved and all(f(q,'speed')==0 for q in rows[i:i+hold]):
+            return i
+    sys.exit('make_levels: the chain never stops in its first bay')
+
+def make10(S,B,rows):
+    bx,by=B[0],B[1]
+    # Bay A is where the manoeuvre first stands long enough to park (its hold), bay B where it
+    # ends: a row of cars facing each other across the lane, nose-in bays on both sides.
+    a=rows[first_stop(rows)]
+    ax,ay=S[0]+f(a,'x'),S[1]+f(a,'y')
+    parked=[car('N%d'%(k+1),ax+dx,ay,90) for k,dx in enumerate((-5.4,-2.7,2.7,5.4))]
+    parked+=[car('S%d'%(k+1),bx+dx,by,270) for k,dx in enumerate((-5.4,-2.7,2.7,5.4))]
+    north=ay+2.2+0.6
+    south=by-2.2-0.6
+    obstacles=[{"id":"north-wall","points":box((ax+bx)/2,north+0.2,(bx-ax)/2+9.0,0.2)},
+               {"id":"south-wall","points":box((ax+bx)/2,south-0.2,(bx-ax)/2+9.0,0.2)}]
+    mk=[line((ax+x,ay-2.75),(ax+x,ay+2.75)) for x in (-6.75,-4.05,-1.35,1.35,4.05,6.75)]
+    mk+=[line((bx+x,by-2.75),(bx+x,by+2.75)) for x in (-6.75,-4.05,-1.35,1.35,4.05,6.75)]
+    mk.append(arrow((S[0]-4,S[1]),(S[0]-1,S[1])))
+    goal={"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":PARS.get(10,30),
+          "time_limit":45,
+          "next_bays":[{"x":r(bx),"y":r(by),"heading_deg":270,"length":5.5,"width":2.6}]}
+    return scene('level-10-chain',10,'Two bays against the clock',
+      'Park nose-in in bay 1, then in bay 2 across the lane, within the time limit',
+      S,(ax,ay,90,5.5,2.6),goal,parked,obstacles,mk,
+      [[r(S[0]-7),r(south-1)],[r(bx+9),r(north+1)]])
+LEVEL10={'file':'level-10-chain','bay':(0.0,0.0),'make':make10,
+    'comment':'Level 10: left lock nose-in into bay 1, stop; reverse out on left lock, drive on, right lock nose-in into bay 2, stop.',
+    'steps':[('U',60),('.',30),(('L',16),('UL',8),lambda r:f(r,'heading_deg')>87.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),
+             (('.',16),('U',8),lambda r:f(r,'y')>7.5),('D',lambda r:f(r,'speed')<=0),('.',75),
+             ('D',40),(('L',8),('DL',16),lambda r:f(r,'heading_deg')<3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),
+             ('U',lambda r:f(r,'speed')>=0),('.',1),
+             ('U',lambda r:f(r,'x')>12),('D',lambda r:f(r,'speed')<1.6),('.',1),
+             (('R',16),('UR',8),lambda r:f(r,'heading_deg')<-87.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),
+             (('.',16),('U',8),lambda r:f(r,'y')<-4),('D',lambda r:f(r,'speed')<=0),('.',30)]}
+
 def main():
     global CARDEMO
     global ONLY
@@ -405,7 +447,7 @@ def main():
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
-        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8, LEVEL9):
+        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8, LEVEL9, LEVEL10):
             if ONLY and level["file"].split("-")[1] not in ONLY:
                 continue
             build(level)

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/replay_text.hpp"
 #include "io/scene_json.hpp"
 #include "sim/parking_goal.hpp"
 #include "sim/world.hpp"
@@ -177,6 +178,83 @@ TEST(LevelShortcuts, ConesUTurnShortOfTheirEndNeverParks) {
   for (int frames = 20; frames <= 400; frames += 20) {
     EXPECT_FALSE(parks(s, straight(frames))) << frames;
   }
+}
+
+// The challenge after running `runs` on `scene` (then 4 s standing), stopped when it is over.
+ParkingChallenge runChallenge(const Scene& scene, const std::vector<InputRun>& runs) {
+  World world(scene);
+  ParkingChallenge challenge(*scene.goal, world.settings().hz, scene.player.health);
+  challenge.observe(world);
+  for (const InputRun& run : runs) {
+    for (std::int64_t i = 0; i < run.count && !challenge.over(); ++i) {
+      world.step(run.keys);
+      challenge.observe(world);
+    }
+  }
+  for (int i = 0; i < 480 && !challenge.over(); ++i) {
+    world.step(InputFrame{});
+    challenge.observe(world);
+  }
+  return challenge;
+}
+
+// Level 10's golden inputs with the standing run that parks bay 1 made `frames` long.
+std::vector<InputRun> chainWithWaitInBay1(const Scene& scene, const std::vector<InputRun>& golden,
+                                          std::int64_t frames) {
+  const ParkingChallenge parked = runChallenge(scene, golden);
+  EXPECT_TRUE(parked.bayParkedFrame(0).has_value());
+  const std::int64_t at = parked.bayParkedFrame(0).value_or(0);
+  std::vector<InputRun> runs = golden;
+  std::int64_t start = 0;
+  for (InputRun& run : runs) {
+    if (start < at && at <= start + run.count) {
+      EXPECT_EQ(run.keys, InputFrame{}) << "bay 1 is parked while standing";
+      run.count = frames;
+      return runs;
+    }
+    start += run.count;
+  }
+  ADD_FAILURE() << "no run parks bay 1";
+  return runs;
+}
+
+TEST(LevelShortcuts, ChainSecondBayAloneOrTooLateNeverParks) {
+  // Level 10: bay 2 counts only after bay 1 is parked (stood in for the hold), and both within
+  // the time limit.
+  const Scene s = level("level-10-chain");
+  ASSERT_TRUE(s.goal.has_value());
+  ASSERT_EQ(s.goal->next_bays.size(), 1u);
+  const Parsed<Replay> golden =
+      loadReplay(std::string(CARDEMO_SOURCE_DIR) + "/assets/replays/level-10-chain.replay");
+  ASSERT_TRUE(golden.ok()) << golden.error().toString();
+  const ParkingChallenge whole = runChallenge(s, golden.value().runs);
+  ASSERT_TRUE(whole.parkedFrame().has_value()) << "the golden drive parks both bays";
+
+  // Through bay 1 without standing there for the hold: the same drive ends in bay 2, which
+  // would park as a level of its own, but here bay 1 is still the bay.
+  const std::vector<InputRun> rolled = chainWithWaitInBay1(s, golden.value().runs, 20);
+  const ParkingChallenge skipped = runChallenge(s, rolled);
+  EXPECT_FALSE(skipped.parkedFrame().has_value());
+  EXPECT_EQ(skipped.baysParked(), 0u);
+  Scene bay2_only = s;
+  bay2_only.goal->bay = s.goal->next_bays[0];
+  bay2_only.goal->next_bays.clear();
+  EXPECT_TRUE(runChallenge(bay2_only, rolled).parkedFrame().has_value())
+      << "the drive does end in bay 2: the test is not vacuous";
+
+  // Straight down the lane and nose first into bay 2, at any length of run and turn.
+  for (int run = 100; run <= 700; run += 50) {
+    for (int turn = 100; turn <= 400; turn += 50) {
+      EXPECT_FALSE(parks(s, {{"U", run}, {"UR", turn}, {"U", 60}, {"D", 0}})) << run << " " << turn;
+    }
+  }
+
+  // Too slow: 30 s more standing in bay 1, and the time is up before bay 2.
+  const ParkingChallenge late =
+      runChallenge(s, chainWithWaitInBay1(s, golden.value().runs, 75 + 30 * golden.value().hz));
+  EXPECT_TRUE(late.timedOut());
+  EXPECT_EQ(late.baysParked(), 1u);
+  EXPECT_FALSE(late.parkedFrame().has_value());
 }
 
 }  // namespace

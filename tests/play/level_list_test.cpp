@@ -23,7 +23,7 @@ TEST(LevelList, BundledLevelsInOrderThenFreeDrive) {
   const std::vector<LevelEntry> e =
       listLevels(std::string(CARDEMO_SOURCE_DIR) + "/assets", warnings);
   EXPECT_TRUE(warnings.empty());
-  ASSERT_EQ(e.size(), 10u);
+  ASSERT_EQ(e.size(), 11u);
   EXPECT_EQ(e[0].title, "Straight in");
   EXPECT_EQ(e[1].title, "Reverse bay");
   EXPECT_EQ(e[2].title, "Parallel parking");
@@ -33,7 +33,8 @@ TEST(LevelList, BundledLevelsInOrderThenFreeDrive) {
   EXPECT_EQ(e[6].title, "Narrow alley");
   EXPECT_EQ(e[7].title, "Angled bay");
   EXPECT_EQ(e[8].title, "Behind the cones");
-  for (int i = 0; i < 9; ++i) {
+  EXPECT_EQ(e[9].title, "Two bays against the clock");
+  for (int i = 0; i < 10; ++i) {
     EXPECT_EQ(e[static_cast<std::size_t>(i)].order, i + 1);
     EXPECT_FALSE(e[static_cast<std::size_t>(i)].free_drive);
   }
@@ -41,9 +42,9 @@ TEST(LevelList, BundledLevelsInOrderThenFreeDrive) {
   for (const LevelEntry& level : e) EXPECT_FALSE(level.task.empty()) << level.title;
   EXPECT_NE(e[1].task.find("reverse into the bay"), std::string::npos) << e[1].task;
   EXPECT_NE(e[1].task.find("facing out"), std::string::npos) << e[1].task;
-  EXPECT_TRUE(e[9].free_drive);
-  EXPECT_EQ(e[9].title, "Free drive");
-  EXPECT_NE(e[9].path.find("parking-lot.json"), std::string::npos);
+  EXPECT_TRUE(e[10].free_drive);
+  EXPECT_EQ(e[10].title, "Free drive");
+  EXPECT_NE(e[10].path.find("parking-lot.json"), std::string::npos);
 }
 
 TEST(LevelList, NextLevelStopsAtTheLastLevelAndNeverLeadsToFreeDrive) {
@@ -57,12 +58,13 @@ TEST(LevelList, NextLevelStopsAtTheLastLevelAndNeverLeadsToFreeDrive) {
   std::vector<std::string> warnings;
   const std::vector<LevelEntry> bundled =
       listLevels(std::string(CARDEMO_SOURCE_DIR) + "/assets", warnings);
-  ASSERT_EQ(bundled.size(), 10u);
+  ASSERT_EQ(bundled.size(), 11u);
   EXPECT_EQ(nextLevel(bundled, 0), std::optional<std::size_t>(1));
   EXPECT_EQ(nextLevel(bundled, 5), std::optional<std::size_t>(6));
   EXPECT_EQ(nextLevel(bundled, 6), std::optional<std::size_t>(7));
   EXPECT_EQ(nextLevel(bundled, 7), std::optional<std::size_t>(8));
-  EXPECT_EQ(nextLevel(bundled, 8), std::nullopt);
+  EXPECT_EQ(nextLevel(bundled, 8), std::optional<std::size_t>(9));
+  EXPECT_EQ(nextLevel(bundled, 9), std::nullopt);
 }
 
 // Progress counts the levels (not free drive), those with a best score and their stars.
