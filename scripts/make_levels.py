@@ -10,7 +10,10 @@ steering ramp needs no fixed holds, since the turns run until their heading is r
 manoeuvre is first driven in an empty scene from the origin; the level is then built around its
 end pose (the bay where the car stops, the player's start that distance before it), so the replay
 parks whatever the car physics. Run it again after a physics change and re-check the hits and
-parked frames it prints.
+parked frames it prints. Each level's par is the parked time of its human-tempo replay
+(assets/replays/LEVEL.human.replay, made by scripts/make_human_replays.py) rounded up to whole
+seconds; after a change that moves the levels, run this, then make_human_replays.py, then this
+again.
 
 usage: scripts/make_levels.py CARDEMO_BINARY [LEVEL_NUMBER...]
 """
@@ -26,11 +29,10 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "assets")
 CARDEMO = None
-TMP = tempfile.mkdtemp(prefix="cardemo-levels-")
-EMPTY = os.path.join(TMP, "empty.json")
+TMP = None    # a temporary folder, made by main() (or by a script that imports this one)
+EMPTY = None  # the empty scene the manoeuvres are first driven in, in TMP
 ONLY = []
 MAX_SPEED = 5.5  # m/s (about 20 km/h): parking levels are slow
-PARS = {}  # level number -> par time, s (from the human replays: main() reads them)
 PLAYER_LENGTH, PLAYER_WIDTH = 4.5, 1.8  # m
 
 
@@ -140,6 +142,16 @@ def build(lv):
     sc=lv['make'](S,B,rows)
     path='%s/scenes/levels/%s.json'%(OUT,lv['file'])
     open(path,'w').write(dump(sc))
+    # The par: the level's human-tempo replay's parked time, rounded up (make_human_replays.py).
+    par=human_par(lv['file'])
+    if par is None:
+        print('make_levels: %s: its human replay is missing or does not park; par left at %s s '
+              '(run scripts/make_human_replays.py, then this again)'%(lv['file'],sc['goal']['par_time']))
+    else:
+        if par>sc['goal']['time_limit']:
+            sys.exit('make_levels: %s: par %d s from its human replay exceeds its time limit'%(lv['file'],par))
+        sc['goal']['par_time']=par
+        open(path,'w').write(dump(sc))
     rp='%s/replays/%s.replay'%(OUT,lv['file'])
     body='cardemo-replay 1\n# %s\nscene ../scenes/levels/%s.json\nhz 120\n%s\n'%(lv['comment'],lv['file'],'\n'.join(fx))
     open(rp,'w').write(body)
@@ -151,6 +163,18 @@ def build(lv):
     if 'expect parked never' in exp:
         sys.exit('make_levels: %s never parks; lengthen its tail of stopped frames' % rp)
     open(rp,'w').write(body+'# Expectations (regenerate with: cardemo replay THIS --print-expect)\n'+'\n'.join(exp)+'\n')
+
+def human_par(name):
+    """The parked time of assets/replays/NAME.human.replay rounded up to whole seconds, or None
+    when there is no such replay or it does not park."""
+    rp='%s/replays/%s.human.replay'%(OUT,name)
+    if not os.path.exists(rp):
+        return None
+    out=subprocess.run([CARDEMO,'replay',rp,'--json','-'],capture_output=True,text=True)
+    if out.returncode not in (0,1):
+        return None
+    score=json.loads(out.stdout)['score']
+    return None if score is None else math.ceil(score['seconds'])
 
 def bay_between_cars(bx,by):
     """The bay of levels 1 and 5, facing +x: two cars on each side, bay lines, a wall behind."""
@@ -417,7 +441,7 @@ def make10(S,B,rows):
     mk=[line((ax+x,ay-2.75),(ax+x,ay+2.75)) for x in (-6.75,-4.05,-1.35,1.35,4.05,6.75)]
     mk+=[line((bx+x,by-2.75),(bx+x,by+2.75)) for x in (-6.75,-4.05,-1.35,1.35,4.05,6.75)]
     mk.append(arrow((S[0]-4,S[1]),(S[0]-1,S[1])))
-    goal={"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":PARS.get(10,30),
+    goal={"position_tolerance":0.5,"heading_tolerance_deg":8,"max_speed":0.3,"par_time":30,
           "time_limit":45,
           "next_bays":[{"x":r(bx),"y":r(by),"heading_deg":270,"length":5.5,"width":2.6}]}
     return scene('level-10-chain',10,'Two bays against the clock',
@@ -434,20 +458,24 @@ LEVEL10={'file':'level-10-chain','bay':(0.0,0.0),'make':make10,
              (('R',16),('UR',8),lambda r:f(r,'heading_deg')<-87.3),('.',lambda r:abs(f(r,'steer_deg'))<0.01),
              (('.',16),('U',8),lambda r:f(r,'y')<-4),('D',lambda r:f(r,'speed')<=0),('.',30)]}
 
+ALL_LEVELS = (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8, LEVEL9, LEVEL10)
+
+
 def main():
-    global CARDEMO
-    global ONLY
+    global CARDEMO, ONLY, TMP, EMPTY
     if len(sys.argv) < 2:
         sys.exit(__doc__)
     CARDEMO = os.path.abspath(sys.argv[1])
     ONLY = sys.argv[2:]
+    TMP = tempfile.mkdtemp(prefix="cardemo-levels-")
+    EMPTY = os.path.join(TMP, "empty.json")
     with open(EMPTY, "w") as f:
         json.dump({"format": "cardemo-scene/1", "name": "empty", "parked": [],
                    "player": {"x": 0, "y": 0, "heading_deg": 0, "length": PLAYER_LENGTH, "width": PLAYER_WIDTH,
                               "max_speed": MAX_SPEED}}, f)
     os.makedirs(os.path.join(OUT, "scenes", "levels"), exist_ok=True)
     try:
-        for level in (LEVEL1, LEVEL2, LEVEL3, LEVEL4, LEVEL5, LEVEL6, LEVEL7, LEVEL8, LEVEL9, LEVEL10):
+        for level in ALL_LEVELS:
             if ONLY and level["file"].split("-")[1] not in ONLY:
                 continue
             build(level)
